@@ -1,0 +1,29 @@
+plugins {
+    id("ktcs.kotlin-jvm")
+    application
+}
+
+application {
+    mainClass.set("org.ktcs.kernel.app.MainKt")
+}
+
+// api(...) plays Maven's compile scope: the extension modules (loopback, web overview, XML channels) build on
+// the kernel and see these too, as they do in Maven.
+dependencies {
+    api(project(":api"))
+    api(libs.kotlinx.coroutines.core)
+    api(libs.kotlinx.serialization.json)
+    api(libs.koin.core)
+    api(libs.koin.logger.slf4j)
+    api(libs.ktor.server.core)
+    api(libs.ktor.server.cio)
+    api(libs.ktor.server.content.negotiation)
+    api(libs.ktor.serialization.kotlinx.json)
+    api(libs.jgrapht.core)
+    api(libs.jackson.dataformat.xml)
+    api(libs.jackson.module.kotlin)
+    api(libs.logback.classic)
+
+    testImplementation(libs.mockk)
+    testImplementation(libs.ktor.server.test.host)
+}

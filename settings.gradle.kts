@@ -1,0 +1,19 @@
+// The Gradle build mirrors the Maven reactor (pom.xml): same modules, same versions (gradle/libs.versions.toml),
+// same dependencies per module. Maven is the build CI runs; BuildFilesAgreeTest keeps this one in step.
+rootProject.name = "ktcs"
+
+dependencyResolutionManagement {
+    repositoriesMode.set(RepositoriesMode.FAIL_ON_PROJECT_REPOS)
+    repositories {
+        mavenCentral()
+    }
+}
+
+include(
+    "api",
+    "kernel",
+    "adapters-loopback",
+    "web-overview",
+    "xml-channels",
+    "e2e-tests",
+)
