@@ -1,0 +1,62 @@
+package org.ktcs.e2e
+
+import java.io.BufferedReader
+import java.nio.file.Path
+import java.util.concurrent.LinkedBlockingQueue
+import java.util.concurrent.TimeUnit
+import kotlin.concurrent.thread
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.seconds
+
+/**
+ * `./ktcs` started as a user starts it (without the build step: the test runs inside the build, after packaging).
+ * Collects the merged output line by line.
+ */
+class KtcsProcess(vararg args: String, workingDirectory: Path = RepositoryRoot.path) : AutoCloseable {
+    private val process: Process =
+        ProcessBuilder(listOf(RepositoryRoot.path.resolve("ktcs").toString(), "--no-build") + args)
+            .directory(workingDirectory.toFile())
+            .redirectErrorStream(true)
+            .also { it.environment().keys.removeIf { key -> key.startsWith("KTCS_") } }
+            .start()
+    private val lines = LinkedBlockingQueue<String>()
+    private val seen = mutableListOf<String>()
+    private val reader = thread(name = "ktcs-output") {
+        process.inputStream.bufferedReader().use(BufferedReader::lineSequence).forEach(lines::put)
+    }
+
+    /** Waits for a line containing [text] and returns it; fails with everything seen so far on time-out. */
+    fun awaitLine(text: String, timeout: Duration = 60.seconds): String {
+        val deadline = System.nanoTime() + timeout.inWholeNanoseconds
+        while (System.nanoTime() < deadline) {
+            val line = lines.poll(100, TimeUnit.MILLISECONDS) ?: continue
+            seen += line
+            if (text in line) return line
+        }
+        error("no line containing '$text' within $timeout; output so far:\n${output()}")
+    }
+
+    /** Sends SIGTERM and returns the exit code. */
+    fun terminate(): Int {
+        process.destroy()
+        return awaitExit()
+    }
+
+    fun awaitExit(timeout: Duration = 30.seconds): Int {
+        check(process.waitFor(timeout.inWholeMilliseconds, TimeUnit.MILLISECONDS)) {
+            "ktcs did not exit; output:\n${output()}"
+        }
+        reader.join(5_000)
+        return process.exitValue()
+    }
+
+    /** Everything printed so far. */
+    fun output(): String {
+        lines.drainTo(seen)
+        return seen.joinToString("\n")
+    }
+
+    override fun close() {
+        process.destroyForcibly()
+    }
+}

@@ -1,0 +1,106 @@
+package org.ktcs.e2e
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldHaveSize
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
+import io.kotest.matchers.string.shouldStartWith
+import java.net.URI
+import java.net.http.HttpClient
+import java.net.http.HttpRequest
+import java.net.http.HttpResponse
+import java.nio.file.Files
+
+/** `./ktcs` as the README tells a user to run it. */
+class LauncherTest : FunSpec({
+    val local = arrayOf("--set", "web.bindAddress=127.0.0.1", "--set", "web.port=0")
+
+    test("starts with the demo plant, logs one ready line, serves, and exits 0 on SIGTERM") {
+        KtcsProcess(*local).use { ktcs ->
+            val ready = ktcs.awaitLine("kTCS ready")
+            ready shouldContain
+                "model 'kTCS Demo' from demo plant (points=59 paths=75 locations=16 locationTypes=4 blocks=2 vehicles=4)"
+            val base = Regex("web API (http://\\S+)/v1").find(ready)!!.groupValues[1]
+            val response = HttpClient.newHttpClient()
+                .send(
+                    HttpRequest.newBuilder(URI("$base/v1/kernel/version")).build(),
+                    HttpResponse.BodyHandlers.ofString(),
+                )
+            response.statusCode() shouldBe 200
+
+            ktcs.terminate() shouldBe 0
+            ktcs.output().lines().filter { "kTCS ready" in it } shouldHaveSize 1
+        }
+    }
+
+    test("loads a model given with --model") {
+        val model = Files.createTempFile("plant", ".xml")
+        Files.writeString(model, TINY_MODEL)
+        KtcsProcess("--model", model.toString(), *local).use { ktcs ->
+            ktcs.awaitLine("kTCS ready") shouldContain "model 'Tiny' from $model (points=2 paths=1"
+            ktcs.terminate() shouldBe 0
+        }
+    }
+
+    test("a broken model exits non-zero with a one-line error") {
+        val model = Files.createTempFile("broken", ".xml")
+        Files.writeString(model, TINY_MODEL.replace("destinationPoint=\"B\"", "destinationPoint=\"Nowhere\""))
+        KtcsProcess("--model", model.toString(), *local).use { ktcs ->
+            ktcs.awaitExit() shouldBe 1
+            val output = ktcs.output().lines().filter { it.isNotBlank() }
+            output shouldHaveSize 1
+            output.single() shouldStartWith "ktcs: error: invalid plant model:"
+            output.single() shouldContain "Nowhere"
+        }
+    }
+
+    test("an unknown setting exits non-zero naming the key") {
+        KtcsProcess("--set", "web.prot=1").use { ktcs ->
+            ktcs.awaitExit() shouldBe 1
+            ktcs.output().trim() shouldBe
+                "ktcs: error: --set web.prot=1: unknown setting 'web.prot' (did you mean 'web.port'?)"
+        }
+    }
+
+    test("model check prints the summary of a valid model") {
+        val model = Files.createTempFile("plant", ".xml")
+        Files.writeString(model, TINY_MODEL)
+        KtcsProcess("model", "check", model.toString()).use { ktcs ->
+            ktcs.awaitExit() shouldBe 0
+            ktcs.output().lines().first() shouldBe "points=2 paths=1 locations=1 locationTypes=1 blocks=0 vehicles=1"
+        }
+    }
+})
+
+private val TINY_MODEL = """
+    <?xml version="1.0" encoding="UTF-8" standalone="yes"?>
+    <model version="7.0.0" name="Tiny">
+        <point name="A" positionX="0" positionY="0" positionZ="0" vehicleOrientationAngle="NaN" type="HALT_POSITION">
+            <maxVehicleBoundingBox length="1000" width="1000" height="1000" referenceOffsetX="0" referenceOffsetY="0"/>
+            <pointLayout labelOffsetX="-10" labelOffsetY="-20" layerId="0"/>
+        </point>
+        <point name="B" positionX="5000" positionY="0" positionZ="0" vehicleOrientationAngle="NaN" type="PARK_POSITION">
+            <maxVehicleBoundingBox length="1000" width="1000" height="1000" referenceOffsetX="0" referenceOffsetY="0"/>
+            <pointLayout labelOffsetX="-10" labelOffsetY="-20" layerId="0"/>
+        </point>
+        <path name="A --- B" sourcePoint="A" destinationPoint="B" length="5000" maxVelocity="1000" maxReverseVelocity="1000" locked="false">
+            <pathLayout connectionType="DIRECT" layerId="0"/>
+        </path>
+        <vehicle name="V1" energyLevelCritical="30" energyLevelGood="90" energyLevelFullyRecharged="90" energyLevelSufficientlyRecharged="30" maxVelocity="1000" maxReverseVelocity="1000">
+            <boundingBox length="1000" width="1000" height="1000" referenceOffsetX="0" referenceOffsetY="0"/>
+            <vehicleLayout color="#FF0000"/>
+        </vehicle>
+        <locationType name="Station">
+            <allowedOperation name="Load cargo"/>
+            <locationTypeLayout locationRepresentation="LOAD_TRANSFER_GENERIC"/>
+        </locationType>
+        <location name="Station 1" positionX="5000" positionY="2000" positionZ="0" locked="false" type="Station">
+            <link point="B"/>
+            <locationLayout labelOffsetX="-10" labelOffsetY="-20" locationRepresentation="DEFAULT" layerId="0"/>
+        </location>
+        <visualLayout name="VLayout" scaleX="50.0" scaleY="50.0">
+            <layer id="0" ordinal="0" visible="true" name="Default layer" groupId="0"/>
+            <layerGroup id="0" name="Default layer group" visible="true"/>
+        </visualLayout>
+    </model>
+""".trimIndent()

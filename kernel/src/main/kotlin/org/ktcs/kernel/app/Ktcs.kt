@@ -1,0 +1,67 @@
+package org.ktcs.kernel.app
+
+import org.ktcs.kernel.config.ConfigException
+import org.ktcs.kernel.config.ConfigFile
+import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.config.KtcsConfig
+import org.ktcs.kernel.extension.ExtensionException
+import org.ktcs.kernel.extension.Extensions
+import org.ktcs.kernel.model.InvalidModelException
+import org.ktcs.kernel.persistence.ModelFileException
+import org.ktcs.kernel.web.KernelVersion
+import java.io.PrintStream
+import java.nio.file.Files
+import java.nio.file.Path
+
+/** The `ktcs` command: parses the command line, runs one command and returns the process exit code. */
+class Ktcs(private val out: PrintStream, private val err: PrintStream, private val environment: Map<String, String>) {
+    fun run(args: List<String>, awaitShutdown: () -> Unit = ShutdownSignal::await): Int = try {
+        when (val command = CommandLine.parse(args)) {
+            is Command.Run -> runKernel(command.options, awaitShutdown)
+            is Command.ShowConfig -> 0.also { out.println(ConfigFile.describe(config(command.options))) }
+            is Command.CheckModel -> ModelTools(out).check(command.file)
+            is Command.ConvertModel -> ModelTools(out).convert(command.input, command.output)
+            Command.Help -> 0.also { out.println(CommandLine.usage) }
+            Command.Version -> 0.also { out.println("kTCS ${KernelVersion.ofThisBuild().version}") }
+        }
+    } catch (error: UsageException) {
+        err.println("ktcs: ${error.message}")
+        err.println(CommandLine.usage)
+        EXIT_USAGE
+    } catch (error: Exception) {
+        err.println("ktcs: error: ${oneLine(error) ?: throw error}")
+        EXIT_FAILURE
+    }
+
+    private fun runKernel(options: RunOptions, awaitShutdown: () -> Unit): Int {
+        val config = config(options)
+        Logging.apply(config)
+        val application = KernelApplication(config, PlantModelLoader.load(options.model), Extensions.discover())
+        application.start()
+        try {
+            awaitShutdown()
+        } finally {
+            application.stop()
+        }
+        return 0
+    }
+
+    private fun config(options: RunOptions): KtcsConfig {
+        val file = options.configFile ?: DEFAULT_CONFIG.takeIf { Files.isRegularFile(it) }
+        return ConfigLoader().load(file, environment, options.overrides)
+    }
+
+    /** The one-line message for errors a user caused, or `null` for bugs, which keep their stack trace. */
+    private fun oneLine(error: Exception): String? = when (error) {
+        is ConfigException, is ModelFileException, is ExtensionException -> error.message
+        is InvalidModelException -> error.summaryLine()
+        is java.net.BindException -> "cannot listen on the configured address: ${error.message}"
+        else -> null
+    }
+
+    companion object {
+        const val EXIT_FAILURE = 1
+        const val EXIT_USAGE = 2
+        val DEFAULT_CONFIG: Path = Path.of("config", "ktcs.conf")
+    }
+}

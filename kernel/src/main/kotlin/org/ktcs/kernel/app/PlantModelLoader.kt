@@ -1,0 +1,37 @@
+package org.ktcs.kernel.app
+
+import org.ktcs.api.model.PlantModel
+import org.ktcs.kernel.model.InvalidModelException
+import org.ktcs.kernel.model.ModelProblem
+import org.ktcs.kernel.model.PlantModelValidator
+import org.ktcs.kernel.persistence.PlantModelFiles
+import java.nio.file.Path
+
+/** A model that passed validation, with the warnings it still has. */
+data class LoadedModel(val model: PlantModel, val source: String, val warnings: List<ModelProblem>)
+
+/** Reads a plant-model file (or the demo plant) and refuses it if it has errors. */
+object PlantModelLoader {
+    /** The demo plant shipped inside the kernel. */
+    const val DEMO_RESOURCE = "/org/ktcs/kernel/demo/ktcs-demo.xml"
+
+    fun load(file: Path?): LoadedModel = if (file ==
+        null
+    ) {
+        loadDemo()
+    } else {
+        validated(PlantModelFiles.read(file), file.toString())
+    }
+
+    fun loadDemo(): LoadedModel {
+        val stream = PlantModelLoader::class.java.getResourceAsStream(DEMO_RESOURCE)
+            ?: error("the demo plant $DEMO_RESOURCE is missing from the kernel jar")
+        return stream.use { validated(PlantModelFiles.read(it, "demo plant"), "demo plant") }
+    }
+
+    private fun validated(model: PlantModel, source: String): LoadedModel {
+        val problems = PlantModelValidator.validate(model)
+        if (problems.any { it.isError }) throw InvalidModelException(model.name, problems)
+        return LoadedModel(model, source, problems)
+    }
+}

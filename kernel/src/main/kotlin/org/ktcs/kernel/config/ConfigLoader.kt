@@ -1,0 +1,74 @@
+package org.ktcs.kernel.config
+
+import java.nio.file.Files
+import java.nio.file.Path
+
+/**
+ * Builds the effective configuration from, in rising precedence: the defaults, the config file, environment
+ * variables (`KTCS_` + the key in capitals with `.` as `_`, e.g. `KTCS_WEB_PORT`) and `--set key=value` options.
+ * Unknown keys and bad values are rejected with a [ConfigException] naming them.
+ */
+class ConfigLoader(private val settings: List<Setting<*>> = KtcsSettings.all) {
+    private val byKey = settings.associateBy { it.key }
+    private val byEnvironmentName = settings.associateBy { environmentName(it.key) }
+
+    fun load(file: Path?, environment: Map<String, String>, overrides: List<String>): KtcsConfig {
+        val values = mutableMapOf<String, Any>()
+        val sources = mutableMapOf<String, String>()
+        fun put(setting: Setting<*>, raw: String, source: String) {
+            values[setting.key] = setting.parse(raw, source)
+            sources[setting.key] = source
+        }
+        file?.let { path ->
+            readFile(path).forEach { (line, key, raw) -> put(known(key, "$path:$line"), raw, "$path:$line") }
+        }
+        environment.filterKeys { it.startsWith(ENV_PREFIX) }.toSortedMap().forEach { (name, raw) ->
+            val setting = byEnvironmentName[name]
+                ?: throw ConfigException(
+                    "unknown environment variable $name: kTCS knows ${byEnvironmentName.keys.joinToString()}",
+                )
+            put(setting, raw, "environment variable $name")
+        }
+        overrides.forEach { option ->
+            val (key, raw) = splitAssignment(option) ?: throw ConfigException("--set '$option': expected key=value")
+            put(known(key, "--set $option"), raw, "--set $key")
+        }
+        return KtcsConfig(values, sources)
+    }
+
+    private fun known(key: String, source: String): Setting<*> = byKey[key]
+        ?: throw ConfigException(
+            "$source: unknown setting '$key'" + (
+                suggestionFor(key)?.let {
+                    " (did you mean '$it'?)"
+                } ?: ""
+                ),
+        )
+
+    private fun suggestionFor(key: String): String? = byKey.keys.firstOrNull { it.equals(key, ignoreCase = true) }
+        ?: byKey.keys.firstOrNull { it.substringAfterLast('.').equals(key.substringAfterLast('.'), ignoreCase = true) }
+
+    private fun readFile(path: Path): List<Triple<Int, String, String>> {
+        if (!Files.isRegularFile(path)) throw ConfigException("config file $path does not exist")
+        return Files.readAllLines(path).mapIndexedNotNull { index, text ->
+            val line = text.trim()
+            if (line.isEmpty() || line.startsWith("#")) return@mapIndexedNotNull null
+            val (key, raw) = splitAssignment(line)
+                ?: throw ConfigException("$path:${index + 1}: expected 'key = value', found '$line'")
+            Triple(index + 1, key, raw)
+        }
+    }
+
+    private fun splitAssignment(text: String): Pair<String, String>? {
+        val at = text.indexOf('=')
+        if (at <= 0) return null
+        return text.substring(0, at).trim() to text.substring(at + 1).trim()
+    }
+
+    companion object {
+        const val ENV_PREFIX = "KTCS_"
+
+        /** The environment variable that sets [key], e.g. `KTCS_WEB_BINDADDRESS` for `web.bindAddress`. */
+        fun environmentName(key: String): String = ENV_PREFIX + key.replace('.', '_').uppercase()
+    }
+}

@@ -1,0 +1,69 @@
+package org.ktcs.kernel.config
+
+/**
+ * One configuration key with its type, default and meaning. The catalogue of all settings is [KtcsSettings];
+ * the documented config file and the README's configuration table are checked against it.
+ */
+class Setting<T : Any>(
+    val key: String,
+    val default: T,
+    val description: String,
+    private val parser: (String) -> T?,
+    private val constraint: Constraint<T> = Constraint.none(),
+) {
+    /** Parses [raw] or throws [ConfigException] naming this key, the value and what is expected. */
+    fun parse(raw: String, source: String): T {
+        val value = parser(raw.trim())
+            ?: throw ConfigException("$source: bad value '$raw' for $key: expected ${typeName()}")
+        constraint.problem(value)?.let { throw ConfigException("$source: bad value '$raw' for $key: $it") }
+        return value
+    }
+
+    /** The default as it is written in a config file. */
+    fun defaultText(): String = default.toString()
+
+    private fun typeName(): String = when (default) {
+        is Int -> "a whole number"
+        is Double -> "a number"
+        is Boolean -> "true or false"
+        is Enum<*> -> "one of " + default.javaClass.enumConstants.joinToString(", ")
+        else -> "a text"
+    }
+
+    override fun toString(): String = key
+}
+
+/** A rule a parsed value must follow, with a description for the error message. */
+fun interface Constraint<T> {
+    /** Why [value] is not acceptable, or `null` if it is. */
+    fun problem(value: T): String?
+
+    companion object {
+        fun <T> none(): Constraint<T> = Constraint { null }
+
+        fun intRange(range: IntRange): Constraint<Int> =
+            Constraint { if (it in range) null else "must be between ${range.first} and ${range.last}" }
+
+        fun positive(): Constraint<Double> =
+            Constraint { if (it > 0.0 && it.isFinite()) null else "must be a positive number" }
+
+        fun notBlank(): Constraint<String> = Constraint { if (it.isNotBlank()) null else "must not be empty" }
+    }
+}
+
+fun intSetting(key: String, default: Int, range: IntRange, description: String): Setting<Int> =
+    Setting(key, default, description, String::toIntOrNull, Constraint.intRange(range))
+
+fun positiveDoubleSetting(key: String, default: Double, description: String): Setting<Double> =
+    Setting(key, default, description, String::toDoubleOrNull, Constraint.positive())
+
+fun stringSetting(key: String, default: String, description: String): Setting<String> =
+    Setting(key, default, description, { it }, Constraint.notBlank())
+
+fun booleanSetting(key: String, default: Boolean, description: String): Setting<Boolean> =
+    Setting(key, default, description, String::toBooleanStrictOrNull)
+
+inline fun <reified E : Enum<E>> enumSetting(key: String, default: E, description: String): Setting<E> =
+    Setting(key, default, description, { raw ->
+        enumValues<E>().firstOrNull { it.name.equals(raw, ignoreCase = true) }
+    })

@@ -1,0 +1,40 @@
+package org.ktcs.kernel.app
+
+import io.kotest.assertions.throwables.shouldThrow
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.datatest.withData
+import io.kotest.matchers.shouldBe
+import java.nio.file.Path
+
+class CommandLineTest : FunSpec({
+    test("no arguments start the kernel with the demo plant") {
+        CommandLine.parse(emptyList()) shouldBe Command.Run(RunOptions())
+    }
+
+    test("run options in both spellings, --set repeatable") {
+        CommandLine.parse(
+            listOf("--model", "a.xml", "--config=b.conf", "--set", "web.port=1", "--set=xml.orders.port=2"),
+        ) shouldBe
+            Command.Run(RunOptions(Path.of("a.xml"), Path.of("b.conf"), listOf("web.port=1", "xml.orders.port=2")))
+    }
+
+    test("model tools") {
+        CommandLine.parse(listOf("model", "check", "m.xml")) shouldBe Command.CheckModel(Path.of("m.xml"))
+        CommandLine.parse(listOf("model", "convert", "in.xml", "out.xml")) shouldBe
+            Command.ConvertModel(Path.of("in.xml"), Path.of("out.xml"))
+    }
+
+    context("mistakes get a one-line message") {
+        withData(
+            listOf("--modle", "x") to "unknown option '--modle'",
+            listOf("--model") to "--model needs a value",
+            listOf("model") to "'model' needs a subcommand: check or convert",
+            listOf("model", "fix", "x") to "unknown model subcommand 'fix': expected check or convert",
+            listOf("model", "check") to "expected 'model check FILE', got 0 argument(s)",
+            listOf("model", "convert", "a") to "expected 'model convert IN OUT', got 1 argument(s)",
+            listOf("simulate2") to "unknown command 'simulate2'",
+        ) { (args, message) ->
+            shouldThrow<UsageException> { CommandLine.parse(args) }.message shouldBe message
+        }
+    }
+})
