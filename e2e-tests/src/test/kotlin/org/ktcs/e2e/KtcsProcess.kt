@@ -1,6 +1,5 @@
 package org.ktcs.e2e
 
-import java.io.BufferedReader
 import java.nio.file.Path
 import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit
@@ -22,7 +21,7 @@ class KtcsProcess(vararg args: String, workingDirectory: Path = RepositoryRoot.p
     private val lines = LinkedBlockingQueue<String>()
     private val seen = mutableListOf<String>()
     private val reader = thread(name = "ktcs-output") {
-        process.inputStream.bufferedReader().use(BufferedReader::lineSequence).forEach(lines::put)
+        process.inputStream.bufferedReader().useLines { it.forEach(lines::put) }
     }
 
     /** Waits for a line containing [text] and returns it; fails with everything seen so far on time-out. */

@@ -49,7 +49,7 @@ class LauncherTest : FunSpec({
             ktcs.awaitExit() shouldBe 1
             val output = ktcs.output().lines().filter { it.isNotBlank() }
             output shouldHaveSize 1
-            output.single() shouldStartWith "ktcs: error: invalid plant model:"
+            output.single() shouldStartWith "ktcs: error: invalid plant model 'Tiny': path 'A --- B':"
             output.single() shouldContain "Nowhere"
         }
     }

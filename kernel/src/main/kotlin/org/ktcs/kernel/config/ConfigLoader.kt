@@ -45,8 +45,9 @@ class ConfigLoader(private val settings: List<Setting<*>> = KtcsSettings.all) {
                 ),
         )
 
-    private fun suggestionFor(key: String): String? = byKey.keys.firstOrNull { it.equals(key, ignoreCase = true) }
-        ?: byKey.keys.firstOrNull { it.substringAfterLast('.').equals(key.substringAfterLast('.'), ignoreCase = true) }
+    private fun suggestionFor(key: String): String? =
+        byKey.keys.minByOrNull { editDistance(it.lowercase(), key.lowercase()) }
+            ?.takeIf { editDistance(it.lowercase(), key.lowercase()) <= MAX_SUGGESTION_DISTANCE }
 
     private fun readFile(path: Path): List<Triple<Int, String, String>> {
         if (!Files.isRegularFile(path)) throw ConfigException("config file $path does not exist")
@@ -67,8 +68,24 @@ class ConfigLoader(private val settings: List<Setting<*>> = KtcsSettings.all) {
 
     companion object {
         const val ENV_PREFIX = "KTCS_"
+        private const val MAX_SUGGESTION_DISTANCE = 2
 
         /** The environment variable that sets [key], e.g. `KTCS_WEB_BINDADDRESS` for `web.bindAddress`. */
         fun environmentName(key: String): String = ENV_PREFIX + key.replace('.', '_').uppercase()
     }
+}
+
+/** Levenshtein distance: how many single-character edits turn [a] into [b]. */
+internal fun editDistance(a: String, b: String): Int {
+    var previous = IntArray(b.length + 1) { it }
+    for (i in a.indices) {
+        val current = IntArray(b.length + 1)
+        current[0] = i + 1
+        for (j in b.indices) {
+            val substitution = previous[j] + if (a[i] == b[j]) 0 else 1
+            current[j + 1] = minOf(substitution, previous[j + 1] + 1, current[j] + 1)
+        }
+        previous = current
+    }
+    return previous[b.length]
 }

@@ -52,12 +52,17 @@ class ConfigLoaderTest : FunSpec({
         test("an unknown key in the file, with its line") {
             val file = configFile("web.port = 1", "web.prot = 2")
             shouldThrow<ConfigException> { loader.load(file, emptyMap(), emptyList()) }
-                .message shouldBe "$file:2: unknown setting 'web.prot'"
+                .message shouldBe "$file:2: unknown setting 'web.prot' (did you mean 'web.port'?)"
         }
         test("an unknown key in --set, suggesting the right spelling") {
             shouldThrow<ConfigException> { loader.load(null, emptyMap(), listOf("web.bindaddress=1.2.3.4")) }
                 .message shouldBe
                 "--set web.bindaddress=1.2.3.4: unknown setting 'web.bindaddress' (did you mean 'web.bindAddress'?)"
+        }
+        test("a misspelt key, suggesting the closest one") {
+            shouldThrow<ConfigException> { loader.load(null, emptyMap(), listOf("xml.order.port=1")) }
+                .message shouldBe
+                "--set xml.order.port=1: unknown setting 'xml.order.port' (did you mean 'xml.orders.port'?)"
         }
         test("an unknown KTCS_ environment variable") {
             shouldThrow<ConfigException> { loader.load(null, mapOf("KTCS_WEB_PROT" to "1"), emptyList()) }
