@@ -1,5 +1,7 @@
 package org.ktcs.api.model
 
+import java.time.Instant
+
 /**
  * A vehicle: how the plant model describes it, and what the kernel knows about it while it runs.
  *
@@ -10,6 +12,8 @@ package org.ktcs.api.model
  * @property maxReverseVelocity mm/s backward.
  * @property envelopeKey selects which envelopes of points and paths this vehicle occupies; `null` for none.
  * @property energyLevel percent.
+ * @property stateTimestamp when [state] last changed.
+ * @property procStateTimestamp when [procState] last changed; the dispatcher's idle delays count from here.
  * @property currentPosition name of the point the vehicle reported last, `null` if unknown.
  * @property precisePosition the exact position the vehicle reported, `null` if unknown.
  * @property orientationAngle degrees, `NaN` when unknown.
@@ -29,7 +33,9 @@ public data class Vehicle(
     override val properties: Map<String, String> = emptyMap(),
     val energyLevel: Int = 100,
     val state: VehicleState = VehicleState.UNKNOWN,
+    val stateTimestamp: Instant = Instant.EPOCH,
     val procState: ProcState = ProcState.IDLE,
+    val procStateTimestamp: Instant = Instant.EPOCH,
     val integrationLevel: IntegrationLevel = IntegrationLevel.TO_BE_RESPECTED,
     val paused: Boolean = false,
     val currentPosition: String? = null,

@@ -1,0 +1,57 @@
+package org.ktcs.api.driver
+
+import org.ktcs.api.event.NotificationLevel
+import org.ktcs.api.kernel.KernelClock
+import org.ktcs.api.model.LoadHandlingDevice
+import org.ktcs.api.model.PlantModel
+import org.ktcs.api.model.Position
+import org.ktcs.api.model.Vehicle
+import org.ktcs.api.model.VehicleState
+
+/**
+ * What a driver can see of the kernel and how it reports its vehicle. The report methods may be called from any
+ * thread: the kernel applies them in its own context, in the order they were made.
+ */
+public interface DriverContext {
+    /** The kernel's clock; simulated drivers schedule their work on it so they follow virtual time too. */
+    public val clock: KernelClock
+
+    /** The plant model as it is now. */
+    public val plantModel: PlantModel
+
+    /** The vehicle as the kernel knows it now. */
+    public fun vehicle(): Vehicle
+
+    /** The vehicle reached the point named [point] (`null`: its position is unknown). */
+    public fun reportPosition(point: String?)
+
+    /** The vehicle's exact position and orientation (degrees), e.g. while it is between points. */
+    public fun reportPrecisePosition(position: Position?, orientationAngle: Double)
+
+    /** The vehicle's state changed. */
+    public fun reportState(state: VehicleState)
+
+    /** The vehicle's energy level, in percent. */
+    public fun reportEnergyLevel(percent: Int)
+
+    /** The vehicle's load handling devices changed. */
+    public fun reportLoadHandlingDevices(devices: List<LoadHandlingDevice>)
+
+    /** The vehicle carried out [command]. */
+    public fun commandExecuted(command: MovementCommand)
+
+    /** The vehicle could not carry out [command]; the kernel withdraws its order. */
+    public fun commandFailed(command: MovementCommand)
+
+    /** Sets ([value] non-null) or removes a property of the vehicle. */
+    public fun setVehicleProperty(key: String, value: String?)
+
+    /** Sets ([value] non-null) or removes a property of the vehicle's current transport order. */
+    public fun setTransportOrderProperty(key: String, value: String?)
+
+    /** Publishes a driver-specific event to the kernel's event stream (web API, WebSocket clients). */
+    public fun publishEvent(type: String, payload: Map<String, String> = emptyMap())
+
+    /** Tells the operators something. */
+    public fun notifyUser(level: NotificationLevel, text: String)
+}

@@ -1,0 +1,18 @@
+package org.ktcs.api.service
+
+import org.ktcs.api.model.PlantModel
+
+/** Reads and changes the plant. Every method may be called from any coroutine. */
+public interface PlantModelService {
+    /** The plant as it is now, with current locks and vehicle states. */
+    public suspend fun plantModel(): PlantModel
+
+    /** Locks or unlocks a path; the router stops or starts using it at once. */
+    public suspend fun setPathLocked(path: String, locked: Boolean)
+
+    /** Locks or unlocks a location; the dispatcher sends no vehicle to a locked location. */
+    public suspend fun setLocationLocked(location: String, locked: Boolean)
+
+    /** Rebuilds the routing graphs (after path properties or locks changed). */
+    public suspend fun updateRoutingTopology()
+}
