@@ -1,0 +1,129 @@
+package org.ktcs.kernel.scheduling
+
+import org.ktcs.api.kernel.KernelClock
+import org.ktcs.api.model.PlantModel
+import org.ktcs.api.scheduling.Scheduler
+import org.ktcs.api.scheduling.SchedulerClient
+import org.slf4j.LoggerFactory
+import java.util.TreeSet
+
+/**
+ * The default [Scheduler]: exclusive points, paths and locations, SINGLE_VEHICLE_ONLY and SAME_DIRECTION_ONLY blocks
+ * (see [BLOCK_ENTRY_DIRECTION]) and paused clients.
+ *
+ * Confined to the kernel context. A grant is decided at once, and its resources count as held from then on; the
+ * client hears of it through [KernelClock.schedule]. A request touching a SINGLE_VEHICLE_ONLY block holds the whole
+ * block until the client has given back every member it asked for; [allocations] shows those extra members,
+ * [SchedulerClient.onAllocationGranted] and [pendingAllocations] only what was asked for.
+ *
+ * Fairness: each client's requests are granted in its own order. A release re-checks only the requests waiting for
+ * what it released, oldest first; a request needing several resources may still be overtaken by younger ones that
+ * need part of them, so, as in openTCS, starvation is possible.
+ */
+class DefaultScheduler(model: PlantModel, clock: KernelClock) : Scheduler {
+    private val blocks = BlockIndex(model)
+    private val occupancy = Occupancy(blocks)
+    private val pending = PendingRequests()
+    private val deliveries = Deliveries(clock)
+    private val claims = LinkedHashMap<String, List<Set<String>>>()
+    private val paused = HashSet<String>()
+    private var nextSeq = 0L
+
+    override fun claim(client: SchedulerClient, resources: List<Set<String>>) {
+        claims[client.name] = resources.map { it.toSet() }
+    }
+
+    override fun unclaim(client: SchedulerClient) {
+        claims.remove(client.name)
+    }
+
+    /** The route ahead that each client claimed, by client name; claims never block anybody. */
+    fun claims(): Map<String, List<Set<String>>> = claims.toMap()
+
+    override fun allocate(client: SchedulerClient, resources: Set<String>) {
+        val request = newRequest(client, resources)
+        if (pending.add(request)) process(listOf(request))
+    }
+
+    override fun allocateNow(client: SchedulerClient, resources: Set<String>) {
+        val request = newRequest(client, resources)
+        for ((resource, others) in occupancy.collisions(client.name, request)) {
+            log.warn("Vehicle {} takes {} although vehicle(s) {} hold it", client.name, resource, others.sorted())
+        }
+        val taken = occupancy.take(client.name, request)
+        process(pending.waitingFor(taken.redirected) + listOfNotNull(pending.head(client.name)))
+    }
+
+    // A grant already decided is still announced: the client refuses it if it no longer wants it.
+    override fun clearPendingAllocations(client: SchedulerClient) {
+        pending.clear(client.name)
+    }
+
+    override fun free(client: SchedulerClient, resources: Set<String>) {
+        wake(occupancy.release(client.name, resources))
+    }
+
+    override fun freeAll(client: SchedulerClient) {
+        deliveries.cancel(client.name)
+        pending.clear(client.name)
+        claims.remove(client.name)
+        wake(occupancy.releaseAll(client.name))
+    }
+
+    override fun setPaused(client: SchedulerClient, paused: Boolean) {
+        if (paused) {
+            this.paused += client.name
+        } else if (this.paused.remove(client.name)) {
+            process(listOfNotNull(pending.head(client.name)))
+        }
+    }
+
+    override fun allocations(): Map<String, Set<String>> = occupancy.snapshot()
+
+    override fun pendingAllocations(): Map<String, List<Set<String>>> = pending.snapshot()
+
+    /** The direction in which the users of each SAME_DIRECTION_ONLY block entered it, where known, by block name. */
+    fun blockDirections(): Map<String, String> = occupancy.directions.directions()
+
+    /** Whom each client's oldest pending request waits for, including the users of blocks it may not enter yet. */
+    fun waitForGraph(): WaitForGraph = WaitForGraph(
+        pending.heads()
+            .associate { it.client.name to occupancy.blockersOf(it.client.name, it) }
+            .filterValues { it.isNotEmpty() },
+    )
+
+    private fun newRequest(client: SchedulerClient, resources: Set<String>): Request {
+        val requested = resources.toSet()
+        val expanded = blocks.expand(requested)
+        return Request(nextSeq++, client, requested, expanded, blocks.entries(expanded))
+    }
+
+    private fun wake(keys: Set<String>) {
+        if (keys.isNotEmpty()) process(pending.waitingFor(keys))
+    }
+
+    // Granting never frees anything, so one pass in request order suffices; it only adds the next head of a served
+    // client and the waiters of blocks whose direction changed.
+    private fun process(candidates: Collection<Request>) {
+        val queue = TreeSet(compareBy(Request::seq)).apply { addAll(candidates) }
+        while (queue.isNotEmpty()) {
+            val request = queue.pollFirst()!!
+            if (!pending.isHead(request) || !isGrantable(request)) continue
+            pending.pop(request.client.name)?.let(queue::add)
+            queue += pending.waitingFor(grant(request))
+        }
+    }
+
+    private fun isGrantable(request: Request): Boolean =
+        request.client.name !in paused && occupancy.mayTake(request.client.name, request)
+
+    private fun grant(request: Request): Set<String> {
+        val taken = occupancy.take(request.client.name, request)
+        deliveries.send(request.client, request.resources) { free(request.client, taken.added) }
+        return taken.redirected
+    }
+
+    private companion object {
+        private val log = LoggerFactory.getLogger(DefaultScheduler::class.java)
+    }
+}

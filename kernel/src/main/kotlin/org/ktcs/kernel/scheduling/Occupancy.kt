@@ -1,0 +1,90 @@
+package org.ktcs.kernel.scheduling
+
+/**
+ * Who holds which resource. A client holds what it requested plus the rest of every SINGLE_VEHICLE_ONLY block it
+ * requested a member of, and keeps such a block as long as it holds a requested member of it.
+ *
+ * Resource and block names double as wake-up keys: the release functions return the keys whose change may let a
+ * waiting request through (block names are unique among all model objects, so they never clash with resources).
+ */
+internal class Occupancy(private val blocks: BlockIndex) {
+    private val holders = HashMap<String, MutableSet<String>>()
+    private val held = HashMap<String, MutableSet<String>>()
+    private val requested = HashMap<String, MutableSet<String>>()
+    val directions = DirectionRecords()
+
+    fun snapshot(): Map<String, Set<String>> = held.mapValues { it.value.toSet() }
+
+    fun mayTake(client: String, request: Request): Boolean =
+        request.expanded.all { isAvailable(it, client) } && request.entries.all { directions.admits(it, client) }
+
+    /** The other clients standing in the way of [request], with the resources they block. */
+    fun blockersOf(client: String, request: Request): Map<String, Set<String>> {
+        val blockers = HashMap<String, MutableSet<String>>()
+        for (resource in request.expanded) {
+            othersHolding(resource, client).forEach { blockers.getOrPut(it, ::HashSet) += resource }
+        }
+        for (entry in request.entries.filterNot { directions.admits(it, client) }) {
+            val others = directions.users(entry.block.name) - client
+            others.forEach { blockers.getOrPut(it, ::HashSet) += entry.block.members }
+        }
+        return blockers
+    }
+
+    /** The other clients holding what [request] asks for, by resource. */
+    fun collisions(client: String, request: Request): Map<String, Set<String>> =
+        request.expanded.associateWith { othersHolding(it, client) }.filterValues { it.isNotEmpty() }
+
+    /** Gives [request] to [client], whoever holds it. */
+    fun take(client: String, request: Request): Taken {
+        val redirected = request.entries.filter { directions.enter(it, client) }.mapTo(HashSet()) { it.block.name }
+        val mine = requested.getOrPut(client, ::HashSet)
+        val added = request.resources.filterTo(HashSet()) { mine.add(it) }
+        request.expanded.forEach { hold(client, it) }
+        return Taken(added, redirected)
+    }
+
+    /** Gives [resources] back, and the rest of each SINGLE_VEHICLE_ONLY block no longer justified. */
+    fun release(client: String, resources: Set<String>): Set<String> {
+        val mine = requested[client] ?: return emptySet()
+        mine.removeAll(resources)
+        val active = HashMap<String, Boolean>()
+        val unjustified = blocks.expand(resources).filter { it !in mine && !isImplied(it, mine, active) }
+        if (mine.isEmpty()) requested.remove(client)
+        return unjustified.flatMapTo(HashSet()) { drop(client, it) }
+    }
+
+    fun releaseAll(client: String): Set<String> {
+        requested.remove(client)
+        return held[client].orEmpty().toList().flatMapTo(HashSet()) { drop(client, it) }
+    }
+
+    private fun isAvailable(resource: String, client: String): Boolean = holders[resource]?.all { it == client } ?: true
+
+    private fun othersHolding(resource: String, client: String): Set<String> = holders[resource].orEmpty() - client
+
+    private fun isImplied(resource: String, mine: Set<String>, active: MutableMap<String, Boolean>): Boolean =
+        blocks.singleBlocksOf(resource).any { block ->
+            active.getOrPut(block.name) { block.members.any { it in mine } }
+        }
+
+    private fun hold(client: String, resource: String) {
+        if (!held.getOrPut(client, ::HashSet).add(resource)) return
+        holders.getOrPut(resource, ::LinkedHashSet) += client
+        blocks.sameDirectionBlocksOf(resource).forEach { directions.memberTaken(it, client) }
+    }
+
+    // Any holder leaving is a wake-up, not only the last: after allocateNow the remaining holder may be waiting.
+    private fun drop(client: String, resource: String): List<String> {
+        val mine = held[client] ?: return emptyList()
+        if (!mine.remove(resource)) return emptyList()
+        if (mine.isEmpty()) held.remove(client)
+        val others = holders.getValue(resource).apply { remove(client) }
+        if (others.isEmpty()) holders.remove(resource)
+        val left = blocks.sameDirectionBlocksOf(resource).filter { directions.memberReleased(it, client) }
+        return listOf(resource) + left.map { it.name }
+    }
+}
+
+/** What a grant changed: the resources newly requested, and the blocks whose direction changed. */
+internal class Taken(val added: Set<String>, val redirected: Set<String>)
