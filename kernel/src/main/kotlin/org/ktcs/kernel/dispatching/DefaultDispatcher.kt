@@ -1,0 +1,46 @@
+package org.ktcs.kernel.dispatching
+
+import org.ktcs.api.dispatching.DispatchContext
+import org.ktcs.api.dispatching.Dispatcher
+import org.ktcs.api.dispatching.RecoveryEvaluator
+
+/**
+ * openTCS's default dispatching strategy, in one pass per [dispatch]:
+ * 1. vehicles bound to an order sequence get its next dispatchable order;
+ * 2. free orders go to available vehicles (see [DispatcherConfiguration] for the rankings), a vehicle busy with a
+ *    dispensable order taking a non-dispensable one in preference to staying on it;
+ * 3. idle vehicles with degraded energy get a recharge order, assigned at once;
+ * 4. idle vehicles that are not parked get a park order, assigned at once (and parked ones a better park point, if
+ *    configured).
+ *
+ * A run only looks at available vehicles and dispatchable orders, routes a vehicle–order pair at most once, and with
+ * rankings that need no route (the defaults) routes candidates one by one until the first acceptable one. Delays
+ * count against [DispatchContext.clock]; the dispatcher keeps no timers, so the kernel must run it again when a delay
+ * may have passed. Between runs it remembers only the last reason recorded per waiting order.
+ */
+class DefaultDispatcher(
+    private val configuration: DispatcherConfiguration,
+    private val context: DispatchContext,
+    private val recovery: RecoveryEvaluator,
+) : Dispatcher {
+    private val deferrals = DeferralLog(context)
+
+    override fun dispatch() {
+        val run = DispatchRun(context, configuration, recovery)
+        val availability = VehicleAvailability(run)
+        val checks = CandidateChecks(run, availability)
+        SequenceSuccessors(run, availability, checks, deferrals).assign()
+        FreeOrderAssignment(run, availability, checks, deferrals).assign()
+        handleIdleVehicles(run, availability)
+        deferrals.retainOnly(run.dispatchableOrders.mapTo(HashSet()) { it.name })
+    }
+
+    private fun handleIdleVehicles(run: DispatchRun, availability: VehicleAvailability) {
+        if (!configuration.rechargeIdleVehicles && !configuration.parkIdleVehicles) return
+        val idle = IdleVehicles(run, availability)
+        val free = FreePositions(run)
+        val placer = IdleOrderPlacer(run)
+        if (configuration.rechargeIdleVehicles) IdleVehicleRecharging(run, idle, free, placer).run()
+        if (configuration.parkIdleVehicles) IdleVehicleParking(run, idle, free, placer).run()
+    }
+}
