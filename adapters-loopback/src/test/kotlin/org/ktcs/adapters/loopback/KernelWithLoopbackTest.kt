@@ -1,0 +1,68 @@
+package org.ktcs.adapters.loopback
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.shouldBe
+import org.ktcs.api.event.KernelEvent
+import org.ktcs.api.event.VehicleEvent
+import org.ktcs.api.order.Destination
+import org.ktcs.api.order.TransportOrderCreation
+import org.ktcs.api.order.TransportOrderState
+import org.ktcs.kernel.app.PlantModelLoader
+import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.simulation.SimulationKernel
+import kotlin.random.Random
+
+/** The kernel with four loopback vehicles on the demo plant, on virtual time. */
+class KernelWithLoopbackTest : FunSpec({
+    test(
+        "500 random transport orders all finish; after every event no resource has two holders and no point two vehicles",
+    ) {
+        val config = ConfigLoader().load(null, emptyMap(), listOf("loopback.positionReportInterval=0"))
+        SimulationKernel(
+            PlantModelLoader.loadDemo().model,
+            config,
+            listOf(LoopbackExtension().module()),
+        ).use { kernel ->
+            val violations = mutableListOf<String>()
+            kernel.core.events.listen { event -> violations += exclusivityViolations(event, kernel) }
+            val random = Random(7)
+            val stations = kernel.core.plant.model().locations.filter { it.type == "Transfer station" }.map { it.name }
+            repeat(500) { index ->
+                val (from, to) = stations.shuffled(random).take(2)
+                val creation =
+                    TransportOrderCreation(
+                        "T$index",
+                        listOf(Destination(from, "Load cargo"), Destination(to, "Unload cargo")),
+                    )
+                kernel.context.execute { kernel.core.createTransportOrder(creation) }
+            }
+            val testOrders = { kernel.core.orders.all().filter { it.name.startsWith("T") } }
+            val twoSimulatedDays = 2 * 86_400_000L
+            kernel.context.runUntil {
+                testOrders().count { it.state.isFinal } == 500 ||
+                    kernel.context.elapsedMillis() > twoSimulatedDays
+            }
+
+            testOrders().groupingBy { it.state }.eachCount() shouldBe mapOf(TransportOrderState.FINISHED to 500)
+            violations.shouldBeEmpty()
+        }
+    }
+})
+
+/** Checks the whole fleet after a vehicle event: the invariant is asserted from the state, not assumed. */
+private fun exclusivityViolations(event: KernelEvent, kernel: SimulationKernel): List<String> {
+    if (event !is VehicleEvent) return emptyList()
+    val vehicles = kernel.core.plant.vehicles()
+    val holders = vehicles.flatMap { vehicle ->
+        vehicle.allocatedResources.flatten().toSet().map { it to vehicle.name }
+    }
+    val shared = holders.groupBy({
+        it.first
+    }, { it.second }).filterValues { it.size > 1 }.map { (resource, names) -> "$resource held by $names" }
+    val stacked = vehicles.mapNotNull { it.currentPosition?.let { point -> point to it.name } }
+        .groupBy({
+            it.first
+        }, { it.second }).filterValues { it.size > 1 }.map { (point, names) -> "$point occupied by $names" }
+    return shared + stacked
+}
