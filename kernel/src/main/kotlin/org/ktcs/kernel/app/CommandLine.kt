@@ -10,11 +10,17 @@ sealed interface Command {
     /** Print the effective configuration. */
     data class ShowConfig(val options: RunOptions) : Command
 
+    /** Print the documented config file with every default. */
+    data object ConfigTemplate : Command
+
     /** Check a plant-model file and print a summary. */
     data class CheckModel(val file: Path) : Command
 
     /** Read a plant-model file of any supported version and write it as 7.0.0. */
     data class ConvertModel(val input: Path, val output: Path) : Command
+
+    /** Run the kernel with loopback vehicles on random orders and print figures. */
+    data class Simulate(val options: SimulateOptions) : Command
 
     data object Help : Command
 
@@ -24,6 +30,15 @@ sealed interface Command {
 /** Options shared by the commands that start or configure the kernel. */
 data class RunOptions(val model: Path? = null, val configFile: Path? = null, val overrides: List<String> = emptyList())
 
+/** What `ktcs simulate` runs: a model file or a generated grid, a fleet size, a number of orders, a seed. */
+data class SimulateOptions(
+    val run: RunOptions = RunOptions(),
+    val grid: Pair<Int, Int>? = null,
+    val vehicles: Int? = null,
+    val orders: Int = 100,
+    val seed: Long = 1,
+)
+
 /** A mistake on the command line; the message is one line. */
 class UsageException(message: String) : RuntimeException(message)
 
@@ -31,8 +46,11 @@ object CommandLine {
     val usage: String = """
         |Usage: ktcs [run] [--model FILE] [--config FILE] [--set key=value]...
         |       ktcs config [--config FILE] [--set key=value]...   print the effective configuration
+        |       ktcs config defaults                               print a config file listing every default
         |       ktcs model check FILE                              check a plant-model file
         |       ktcs model convert IN OUT                          convert a plant-model file to version 7.0.0
+        |       ktcs simulate [--model FILE | --grid WxH] [--vehicles N] [--orders M] [--seed S] [--virtual-time]
+        |                     [--set key=value]...                 benchmark the kernel with simulated vehicles
         |       ktcs --help | --version
         |
         |Without --model, kTCS loads its demo plant. Without --config, it reads config/ktcs.conf if that exists.
@@ -43,9 +61,17 @@ object CommandLine {
 
         "run" -> Command.Run(parseRunOptions(args.drop(1)))
 
-        "config" -> Command.ShowConfig(parseRunOptions(args.drop(1)))
+        "config" -> if (args.getOrNull(1) ==
+            "defaults"
+        ) {
+            Command.ConfigTemplate
+        } else {
+            Command.ShowConfig(parseRunOptions(args.drop(1)))
+        }
 
         "model" -> parseModelCommand(args.drop(1))
+
+        "simulate" -> Command.Simulate(parseSimulateOptions(args.drop(1)))
 
         "-h", "--help", "help" -> Command.Help
 
@@ -75,19 +101,73 @@ object CommandLine {
         return args
     }
 
-    private fun parseRunOptions(args: List<String>): RunOptions {
-        var options = RunOptions()
+    private fun parseSimulateOptions(args: List<String>): SimulateOptions {
+        var options = SimulateOptions()
+        forEachOption(args) { name, value ->
+            options = when (name) {
+                "--model" -> options.copy(run = options.run.copy(model = Path.of(value())))
+
+                "--config" -> options.copy(run = options.run.copy(configFile = Path.of(value())))
+
+                "--set" -> options.copy(run = options.run.copy(overrides = options.run.overrides + value()))
+
+                "--grid" -> options.copy(grid = parseGrid(value()))
+
+                "--vehicles" -> options.copy(vehicles = positive(name, value()))
+
+                "--orders" -> options.copy(orders = positive(name, value()))
+
+                "--seed" -> options.copy(
+                    seed =
+                    value().toLongOrNull() ?: throw UsageException("--seed expects a whole number"),
+                )
+
+                "--virtual-time" -> options
+
+                else -> throw UsageException("unknown option '$name'")
+            }
+        }
+        if (options.run.model != null &&
+            options.grid != null
+        ) {
+            throw UsageException("give either --model or --grid, not both")
+        }
+        return options
+    }
+
+    /** Calls [handle] for each `--name value` or `--name=value`; `value()` takes the value when the option has one. */
+    private fun forEachOption(args: List<String>, handle: (name: String, value: () -> String) -> Unit) {
         val rest = args.iterator()
         while (rest.hasNext()) {
             val option = rest.next()
-            val (name, inlineValue) = option.split('=', limit = 2).let { it[0] to it.getOrNull(1) }
-            fun value(): String =
-                inlineValue ?: if (rest.hasNext()) rest.next() else throw UsageException("$name needs a value")
+            val (name, inline) = option.split('=', limit = 2).let { it[0] to it.getOrNull(1) }
+            handle(name) { inline ?: if (rest.hasNext()) rest.next() else throw UsageException("$name needs a value") }
+        }
+    }
+
+    private fun parseGrid(text: String): Pair<Int, Int> {
+        val parts = text.lowercase().split('x')
+        val size = parts.mapNotNull { it.toIntOrNull() }
+        if (parts.size != 2 || size.size != 2 ||
+            size.any { it < 2 }
+        ) {
+            throw UsageException("--grid expects WIDTHxHEIGHT with both at least 2, e.g. 40x40, got '$text'")
+        }
+        return size[0] to size[1]
+    }
+
+    private fun positive(name: String, text: String): Int =
+        text.toIntOrNull()?.takeIf { it > 0 }
+            ?: throw UsageException("$name expects a positive whole number, got '$text'")
+
+    private fun parseRunOptions(args: List<String>): RunOptions {
+        var options = RunOptions()
+        forEachOption(args) { name, value ->
             options = when (name) {
                 "--model" -> options.copy(model = Path.of(value()))
                 "--config" -> options.copy(configFile = Path.of(value()))
                 "--set" -> options.copy(overrides = options.overrides + value())
-                else -> throw UsageException("unknown option '$option'")
+                else -> throw UsageException("unknown option '$name'")
             }
         }
         return options

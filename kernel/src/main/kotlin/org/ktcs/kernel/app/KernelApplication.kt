@@ -1,12 +1,17 @@
 package org.ktcs.kernel.app
 
+import kotlinx.coroutines.runBlocking
 import org.koin.core.KoinApplication
+import org.koin.core.logger.Level
 import org.koin.dsl.koinApplication
 import org.koin.dsl.module
 import org.koin.logger.slf4jLogger
 import org.ktcs.kernel.config.KtcsConfig
+import org.ktcs.kernel.context.RealTimeKernelContext
+import org.ktcs.kernel.core.KernelCore
 import org.ktcs.kernel.extension.ExtensionException
 import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.kernel.kernelModule
 import org.ktcs.kernel.web.KernelVersion
 import org.ktcs.kernel.web.WebServer
 import org.slf4j.LoggerFactory
@@ -22,15 +27,21 @@ class KernelApplication(
 ) {
     private val log = LoggerFactory.getLogger(KernelApplication::class.java)
     private var koin: KoinApplication? = null
+    private val context = RealTimeKernelContext()
+
+    /** The kernel, once started. */
+    val kernel: KernelCore get() = checkNotNull(koin) { "kTCS is not started" }.koin.get()
 
     /** Starts everything and returns the line announcing readiness (also logged). */
     fun start(): String {
         val app = koinApplication {
-            slf4jLogger()
-            modules(kernelModule())
+            slf4jLogger(Level.ERROR)
+            modules(kernelModule(config, loaded.model, context), applicationModule())
             extensions.forEach { extension -> modules(moduleOf(extension)) }
         }
         koin = app
+        val core = app.koin.get<KernelCore>()
+        runBlocking { context.call { core.start() } }
         val webAddress = app.koin.get<WebServer>().start()
         val ready = readyLine(webAddress)
         log.info(ready)
@@ -40,15 +51,16 @@ class KernelApplication(
     fun stop() {
         koin?.let { app ->
             app.koin.get<WebServer>().stop()
+            val core = app.koin.get<KernelCore>()
+            runBlocking { context.call { core.stop() } }
+            context.close()
             app.close()
         }
         koin = null
         log.info("kTCS stopped")
     }
 
-    private fun kernelModule() = module {
-        single { config }
-        single { loaded.model }
+    private fun applicationModule() = module {
         single { KernelVersion.ofThisBuild() }
         single { WebServer(get(), get()) }
     }

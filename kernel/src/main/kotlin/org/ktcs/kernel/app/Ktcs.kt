@@ -8,6 +8,9 @@ import org.ktcs.kernel.extension.ExtensionException
 import org.ktcs.kernel.extension.Extensions
 import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.persistence.ModelFileException
+import org.ktcs.kernel.simulation.Fleet
+import org.ktcs.kernel.simulation.GridPlant
+import org.ktcs.kernel.simulation.SimulationRunner
 import org.ktcs.kernel.web.KernelVersion
 import java.io.PrintStream
 import java.nio.file.Files
@@ -19,6 +22,8 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
         when (val command = CommandLine.parse(args)) {
             is Command.Run -> runKernel(command.options, awaitShutdown)
             is Command.ShowConfig -> 0.also { out.println(ConfigFile.describe(config(command.options))) }
+            Command.ConfigTemplate -> 0.also { out.print(ConfigFile.render()) }
+            is Command.Simulate -> simulate(command.options)
             is Command.CheckModel -> ModelTools(out).check(command.file)
             is Command.ConvertModel -> ModelTools(out).convert(command.input, command.output)
             Command.Help -> 0.also { out.println(CommandLine.usage) }
@@ -46,6 +51,24 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
         return 0
     }
 
+    private fun simulate(options: SimulateOptions): Int {
+        // Virtual time: precise-position reports between points only cost time, nobody watches them.
+        val config = config(
+            options.run.copy(
+                overrides =
+                listOf("loopback.positionReportInterval=0") + options.run.overrides,
+            ),
+        )
+        Logging.apply(config)
+        val plant =
+            options.grid?.let { (width, height) -> GridPlant(width, height).build() }
+                ?: PlantModelLoader.load(options.run.model).model
+        val model = Fleet.withVehicles(plant, options.vehicles ?: plant.vehicles.size.coerceAtLeast(1))
+        val report = SimulationRunner(model, config, Extensions.discover(), options.orders, options.seed).run()
+        report.lines().forEach(out::println)
+        return if (report.ordersFinished == report.ordersCreated && report.doubleAllocations == 0) 0 else EXIT_FAILURE
+    }
+
     private fun config(options: RunOptions): KtcsConfig {
         val file = options.configFile ?: DEFAULT_CONFIG.takeIf { Files.isRegularFile(it) }
         return ConfigLoader().load(file, environment, options.overrides)
@@ -56,6 +79,7 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
         is ConfigException, is ModelFileException, is ExtensionException -> error.message
         is InvalidModelException -> error.summaryLine()
         is java.net.BindException -> "cannot listen on the configured address: ${error.message}"
+        is IllegalArgumentException -> error.message
         else -> null
     }
 

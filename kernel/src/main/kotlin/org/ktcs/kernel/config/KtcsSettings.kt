@@ -1,5 +1,12 @@
 package org.ktcs.kernel.config
 
+import org.ktcs.api.model.IntegrationLevel
+import org.ktcs.kernel.dispatching.CandidatePriority
+import org.ktcs.kernel.dispatching.OrderPriority
+import org.ktcs.kernel.dispatching.VehiclePriority
+import org.ktcs.kernel.routing.EdgeEvaluator
+import org.ktcs.kernel.routing.RoutingAlgorithm
+
 /** Every setting kTCS knows. A key that is not listed here is rejected wherever it appears. */
 object KtcsSettings {
     private const val MAX_PORT = 65535
@@ -7,7 +14,8 @@ object KtcsSettings {
     val webBindAddress = stringSetting(
         "web.bindAddress",
         "0.0.0.0",
-        "Address the web API and the browser overview listen on (0.0.0.0: all interfaces, 127.0.0.1: this machine only).",
+        "Address the web API and the browser overview listen on (0.0.0.0: all interfaces, 127.0.0.1: this machine " +
+            "only).",
     )
     val webPort =
         intSetting(
@@ -31,8 +39,192 @@ object KtcsSettings {
         "Log level of kTCS's own loggers: ERROR, WARN, INFO, DEBUG or TRACE. Libraries log warnings and errors only.",
     )
 
-    val all: List<Setting<*>> =
-        listOf(webBindAddress, webPort, xmlOrdersPort, xmlStatusPort, loopbackTimeFactor, logLevel)
+    val kernelEnableDrivers = booleanSetting(
+        "kernel.enableDriversOnStart",
+        true,
+        "Enable every vehicle's driver when kTCS starts (openTCS: kernelapp.autoEnableDriversOnStartup, default " +
+            "false there).",
+    )
+    val kernelInitialIntegrationLevel = enumSetting(
+        "kernel.initialIntegrationLevel",
+        IntegrationLevel.TO_BE_UTILIZED,
+        "Integration level of every vehicle at start: TO_BE_IGNORED, TO_BE_NOTICED, TO_BE_RESPECTED or " +
+            "TO_BE_UTILIZED (takes orders).",
+    )
+    val kernelDeadlockCheckInterval = longSetting(
+        "kernel.deadlockCheckInterval",
+        1000,
+        0L..3_600_000L,
+        "Milliseconds between checks for vehicles waiting for each other in a cycle; a deadlock is reported and " +
+            "broken by rerouting (0: off).",
+    )
+    val orderPoolSweepInterval =
+        longSetting(
+            "orderpool.sweepInterval",
+            60_000,
+            1L..Long.MAX_VALUE,
+            "Milliseconds between sweeps of old final " +
+                "orders.",
+        )
+    val orderPoolSweepAge =
+        longSetting(
+            "orderpool.sweepAge",
+            86_400_000,
+            0L..Long.MAX_VALUE,
+            "Milliseconds a final order is kept before " +
+                "a sweep removes it.",
+        )
+
+    val routerAlgorithm =
+        enumSetting(
+            "router.algorithm",
+            RoutingAlgorithm.DIJKSTRA,
+            "Shortest-path algorithm: DIJKSTRA, BELLMAN_FORD " +
+                "or FLOYD_WARSHALL.",
+        )
+    val routerEdgeEvaluators = enumListSetting(
+        "router.edgeEvaluators",
+        listOf(EdgeEvaluator.DISTANCE),
+        "Route costs, summed: DISTANCE, TRAVELTIME, HOPS, EXPLICIT_PROPERTIES, BOUNDING_BOX.",
+    )
+    val routerExplicitDefault = longSetting(
+        "router.explicitProperties.defaultValue",
+        1_000_000,
+        0L..Long.MAX_VALUE,
+        "Cost of a path without a tcs:routingCostForward/Reverse property under EXPLICIT_PROPERTIES.",
+    )
+    val routerComputationLimit = intSetting(
+        "router.routeComputationLimit",
+        10,
+        1..1000,
+        "The most routes computed " +
+            "for one route query.",
+    )
+
+    val dispatcherRedispatchInterval = longSetting(
+        "dispatcher.idleVehicleRedispatchingInterval",
+        10_000,
+        0L..3_600_000L,
+        "Milliseconds between safety-net dispatcher runs; it runs at once whenever an order or a vehicle becomes " +
+            "ready (0: off).",
+    )
+    val dispatcherOrderPriorities = enumListSetting(
+        "dispatcher.orderPriorities",
+        listOf(OrderPriority.BY_DEADLINE),
+        "How orders are ranked: BY_AGE, BY_DEADLINE, DEADLINE_AT_RISK_FIRST, BY_NAME.",
+    )
+    val dispatcherVehiclePriorities = enumListSetting(
+        "dispatcher.vehiclePriorities",
+        listOf(VehiclePriority.IDLE_FIRST, VehiclePriority.BY_ENERGY_LEVEL),
+        "How vehicles are ranked: IDLE_FIRST, BY_ENERGY_LEVEL, BY_NAME.",
+    )
+    val dispatcherVehicleCandidatePriorities = enumListSetting(
+        "dispatcher.vehicleCandidatePriorities",
+        listOf(CandidatePriority.IDLE_FIRST, CandidatePriority.BY_ENERGY_LEVEL),
+        "How an order picks among vehicles: " + CandidatePriority.entries.joinToString(", ") + ".",
+    )
+    val dispatcherOrderCandidatePriorities = enumListSetting(
+        "dispatcher.orderCandidatePriorities",
+        listOf(CandidatePriority.BY_DEADLINE),
+        "How a vehicle picks among orders: the same keys as dispatcher.vehicleCandidatePriorities.",
+    )
+    val dispatcherParkIdleVehicles =
+        booleanSetting(
+            "dispatcher.parkIdleVehicles",
+            true,
+            "Send idle vehicles to park positions (openTCS default: " +
+                "false).",
+        )
+    val dispatcherRechargeIdleVehicles = booleanSetting(
+        "dispatcher.rechargeIdleVehicles",
+        true,
+        "Send idle vehicles with degraded energy to recharge (openTCS default: false).",
+    )
+    val dispatcherKeepRecharging = booleanSetting(
+        "dispatcher.keepRechargingUntilFullyCharged",
+        true,
+        "A charging vehicle takes no orders before it is fully recharged.",
+    )
+    val dispatcherRecoveryThreshold = doubleSetting(
+        "dispatcher.recoveryThreshold",
+        0.7,
+        0.0..1.0,
+        "Share of full energy at which a charging vehicle may take orders again (openTCS 4.x recovery evaluator).",
+    )
+
+    val loopbackOperatingTime = longSetting(
+        "loopback.operatingTime",
+        5000,
+        0L..3_600_000L,
+        "Simulated milliseconds an operation takes (vehicle property loopback:operatingTime overrides).",
+    )
+    val loopbackAcceleration =
+        positiveDoubleSetting(
+            "loopback.acceleration",
+            500.0,
+            "Simulated acceleration in mm/s² (vehicle property " +
+                "loopback:acceleration overrides).",
+        )
+    val loopbackDeceleration =
+        positiveDoubleSetting(
+            "loopback.deceleration",
+            500.0,
+            "Simulated deceleration in mm/s² (vehicle property " +
+                "loopback:deceleration overrides).",
+        )
+    val loopbackRechargeRate =
+        doubleSetting(
+            "loopback.rechargePercentPerSecond",
+            1.0,
+            0.0..100.0,
+            "Percent of energy a charging simulated " +
+                "vehicle gains per second.",
+        )
+    val loopbackEnergyDrain = doubleSetting(
+        "loopback.energyDrainPercentPerKm",
+        10.0,
+        0.0..100.0,
+        "Percent of energy a simulated vehicle uses per kilometre driven (openTCS's never drains).",
+    )
+    val loopbackPositionReportInterval = longSetting(
+        "loopback.positionReportInterval",
+        500,
+        0L..60_000L,
+        "Simulated milliseconds between precise-position reports while driving (0: only at points).",
+    )
+
+    val all: List<Setting<*>> = listOf(
+        webBindAddress,
+        webPort,
+        xmlOrdersPort,
+        xmlStatusPort,
+        logLevel,
+        kernelEnableDrivers,
+        kernelInitialIntegrationLevel,
+        kernelDeadlockCheckInterval,
+        orderPoolSweepInterval,
+        orderPoolSweepAge,
+        routerAlgorithm,
+        routerEdgeEvaluators,
+        routerExplicitDefault,
+        routerComputationLimit,
+        dispatcherRedispatchInterval,
+        dispatcherOrderPriorities,
+        dispatcherVehiclePriorities,
+        dispatcherVehicleCandidatePriorities,
+        dispatcherOrderCandidatePriorities,
+        dispatcherParkIdleVehicles,
+        dispatcherRechargeIdleVehicles,
+        dispatcherKeepRecharging,
+        dispatcherRecoveryThreshold,
+        loopbackTimeFactor,
+        loopbackOperatingTime,
+        loopbackAcceleration,
+        loopbackDeceleration,
+        loopbackRechargeRate,
+        loopbackEnergyDrain,
+        loopbackPositionReportInterval,
+    )
 }
 
 /** Log levels a user can choose, in SLF4J's names. */

@@ -26,7 +26,9 @@ class Setting<T : Any>(
         is Int -> "a whole number"
         is Double -> "a number"
         is Boolean -> "true or false"
+        is Long -> "a whole number"
         is Enum<*> -> "one of " + default.javaClass.enumConstants.joinToString(", ")
+        is EnumList<*> -> "a comma-separated list of " + default.values.first().javaClass.enumConstants.joinToString()
         else -> "a text"
     }
 
@@ -62,6 +64,42 @@ fun stringSetting(key: String, default: String, description: String): Setting<St
 
 fun booleanSetting(key: String, default: Boolean, description: String): Setting<Boolean> =
     Setting(key, default, description, String::toBooleanStrictOrNull)
+
+fun longSetting(key: String, default: Long, range: LongRange, description: String): Setting<Long> =
+    Setting(key, default, description, String::toLongOrNull, inRange(range.first, range.last))
+
+fun doubleSetting(
+    key: String,
+    default: Double,
+    range: ClosedFloatingPointRange<Double>,
+    description: String,
+): Setting<Double> = Setting(
+    key,
+    default,
+    description,
+    String::toDoubleOrNull,
+    inRange(range.start, range.endInclusive),
+)
+
+private fun <T : Comparable<T>> inRange(low: T, high: T): Constraint<T> =
+    Constraint { if (it in low..high) null else "must be between $low and $high" }
+
+/** A comma-separated list of enum constants, e.g. `IDLE_FIRST,BY_ENERGY_LEVEL`; written back the same way. */
+inline fun <reified E : Enum<E>> enumListSetting(
+    key: String,
+    default: List<E>,
+    description: String,
+): Setting<EnumList<E>> =
+    Setting(key, EnumList(default), description, { raw ->
+        val names = raw.split(',').map(String::trim).filter(String::isNotEmpty)
+        val values = names.map { name -> enumValues<E>().firstOrNull { it.name.equals(name, ignoreCase = true) } }
+        if (names.isEmpty() || values.any { it == null }) null else EnumList(values.filterNotNull())
+    })
+
+/** A list of enum constants that prints as the config file writes it. */
+data class EnumList<E : Enum<E>>(val values: List<E>) {
+    override fun toString(): String = values.joinToString(",")
+}
 
 inline fun <reified E : Enum<E>> enumSetting(key: String, default: E, description: String): Setting<E> =
     Setting(key, default, description, { raw ->

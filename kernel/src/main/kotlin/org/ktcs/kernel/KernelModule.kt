@@ -1,0 +1,73 @@
+package org.ktcs.kernel
+
+import org.koin.core.module.Module
+import org.koin.dsl.module
+import org.ktcs.api.dispatching.Dispatcher
+import org.ktcs.api.dispatching.RecoveryEvaluator
+import org.ktcs.api.driver.VehicleDriverFactory
+import org.ktcs.api.model.PlantModel
+import org.ktcs.api.routing.Router
+import org.ktcs.api.scheduling.Scheduler
+import org.ktcs.api.service.KernelServices
+import org.ktcs.kernel.config.KtcsConfig
+import org.ktcs.kernel.config.KtcsSettings
+import org.ktcs.kernel.context.KernelContext
+import org.ktcs.kernel.core.KernelCore
+import org.ktcs.kernel.core.KernelOptions
+import org.ktcs.kernel.dispatching.DefaultDispatcher
+import org.ktcs.kernel.dispatching.DefaultRecoveryEvaluator
+import org.ktcs.kernel.dispatching.DispatcherConfiguration
+import org.ktcs.kernel.routing.DefaultRouter
+import org.ktcs.kernel.routing.RouterConfiguration
+import org.ktcs.kernel.scheduling.DefaultScheduler
+import org.ktcs.kernel.services.StandardKernelServices
+import java.util.ServiceLoader
+
+/**
+ * The kernel's Koin definitions. Router, Scheduler, Dispatcher and RecoveryEvaluator are defined by type, so an
+ * extension's module that defines one of these types again replaces the default.
+ */
+fun kernelModule(config: KtcsConfig, model: PlantModel, context: KernelContext): Module = module {
+    single { config }
+    single { model }
+    single<KernelContext> { context }
+    single { routerConfiguration(config) }
+    single { dispatcherConfiguration(config) }
+    single<Router> { DefaultRouter(get()) }
+    single<Scheduler> { DefaultScheduler(get(), get<KernelContext>()) }
+    single<RecoveryEvaluator> { DefaultRecoveryEvaluator(config[KtcsSettings.dispatcherRecoveryThreshold]) }
+    single<Dispatcher> { DefaultDispatcher(get(), get<KernelCore>().dispatchContext, get()) }
+    single {
+        val factories = getAll<VehicleDriverFactory>() + ServiceLoader.load(VehicleDriverFactory::class.java).toList()
+        KernelCore(get(), get(), get(), get(), {
+            get<Dispatcher>()
+        }, factories.distinctBy { it.name }, kernelOptions(config))
+    }
+    single<KernelServices> { StandardKernelServices(get()) }
+}
+
+fun kernelOptions(config: KtcsConfig) = KernelOptions(
+    enableDriversOnStart = config[KtcsSettings.kernelEnableDrivers],
+    initialIntegrationLevel = config[KtcsSettings.kernelInitialIntegrationLevel],
+    redispatchIntervalMillis = config[KtcsSettings.dispatcherRedispatchInterval],
+    sweepIntervalMillis = config[KtcsSettings.orderPoolSweepInterval],
+    sweepAgeMillis = config[KtcsSettings.orderPoolSweepAge],
+    deadlockCheckIntervalMillis = config[KtcsSettings.kernelDeadlockCheckInterval],
+)
+
+fun routerConfiguration(config: KtcsConfig) = RouterConfiguration(
+    algorithm = config[KtcsSettings.routerAlgorithm],
+    edgeEvaluators = config[KtcsSettings.routerEdgeEvaluators].values,
+    explicitPropertiesDefaultValue = config[KtcsSettings.routerExplicitDefault],
+    routeComputationLimit = config[KtcsSettings.routerComputationLimit],
+)
+
+fun dispatcherConfiguration(config: KtcsConfig) = DispatcherConfiguration(
+    orderPriorities = config[KtcsSettings.dispatcherOrderPriorities].values,
+    vehiclePriorities = config[KtcsSettings.dispatcherVehiclePriorities].values,
+    vehicleCandidatePriorities = config[KtcsSettings.dispatcherVehicleCandidatePriorities].values,
+    orderCandidatePriorities = config[KtcsSettings.dispatcherOrderCandidatePriorities].values,
+    parkIdleVehicles = config[KtcsSettings.dispatcherParkIdleVehicles],
+    rechargeIdleVehicles = config[KtcsSettings.dispatcherRechargeIdleVehicles],
+    keepRechargingUntilFullyCharged = config[KtcsSettings.dispatcherKeepRecharging],
+)

@@ -1,0 +1,222 @@
+package org.ktcs.kernel.core
+
+import org.ktcs.api.dispatching.Dispatcher
+import org.ktcs.api.driver.VehicleDriverFactory
+import org.ktcs.api.error.IllegalStateChangeException
+import org.ktcs.api.event.KernelEvent
+import org.ktcs.api.event.OrderSequenceEvent
+import org.ktcs.api.event.TransportOrderEvent
+import org.ktcs.api.kernel.Cancellable
+import org.ktcs.api.model.IntegrationLevel
+import org.ktcs.api.model.PlantModel
+import org.ktcs.api.order.DriveOrder
+import org.ktcs.api.order.HistoryEntry
+import org.ktcs.api.order.OrderSequence
+import org.ktcs.api.order.OrderSequenceCreation
+import org.ktcs.api.order.TransportOrder
+import org.ktcs.api.order.TransportOrderCreation
+import org.ktcs.api.order.TransportOrderState
+import org.ktcs.api.routing.Router
+import org.ktcs.api.scheduling.Scheduler
+import org.ktcs.kernel.context.KernelContext
+import org.ktcs.kernel.events.EventBus
+import org.ktcs.kernel.events.Notifications
+import org.ktcs.kernel.orders.OrderLifecycle
+import org.ktcs.kernel.orders.TransportOrderFactory
+import org.ktcs.kernel.vehicles.VehicleControllers
+import org.ktcs.kernel.vehicles.VehicleEnvironment
+import org.ktcs.kernel.workingset.HistoryCodes
+import org.ktcs.kernel.workingset.ObjectNames
+import org.ktcs.kernel.workingset.OrderSequencePool
+import org.ktcs.kernel.workingset.PlantState
+import org.ktcs.kernel.workingset.TransportOrderPool
+
+/**
+ * The kernel's state and the operations on it, wired together: plant, orders, sequences, vehicle controllers and
+ * the strategies. Everything here runs in [context]; the services in `kernel.services` are the way in from outside.
+ */
+class KernelCore(
+    val context: KernelContext,
+    model: PlantModel,
+    val router: Router,
+    val scheduler: Scheduler,
+    private val dispatcherProvider: () -> Dispatcher,
+    driverFactories: List<VehicleDriverFactory>,
+    val options: KernelOptions = KernelOptions(),
+) {
+    val events = EventBus()
+    val notifications = Notifications(events, context)
+    val plant = PlantState(model, events)
+    val orders = TransportOrderPool(events, context)
+    val sequences = OrderSequencePool(events, context)
+    private val names = ObjectNames(context)
+    private val factory = TransportOrderFactory(context, names)
+    private val lifecycle = OrderLifecycle(orders, sequences, { router }, options.dismissUnroutableOrders)
+    private val trigger = DispatchTrigger(context, dispatcherProvider, options.redispatchIntervalMillis)
+    val dispatchContext = KernelDispatchContext(this)
+    val controllers = VehicleControllers(
+        VehicleEnvironment(context, events, plant, orders, notifications, { scheduler }, { router }, trigger::request),
+        driverFactories,
+    )
+
+    /** The DISPATCHABLE orders, oldest first; kept up to date from order events. */
+    val dispatchable = LinkedHashMap<String, TransportOrder>()
+    private var sweep: Cancellable? = null
+    val watchdog = DeadlockWatchdog(this)
+
+    init {
+        events.listen(lifecycle::onEvent)
+        events.listen(::track)
+    }
+
+    /** Starts the strategies, the vehicles and the periodic tasks; call in the kernel context. */
+    fun start() {
+        router.initialize()
+        router.updateTopology(plant.model())
+        scheduler.initialize()
+        dispatcherProvider().initialize()
+        controllers.start(options.enableDriversOnStart, options.initialIntegrationLevel)
+        trigger.start()
+        watchdog.start()
+        scheduleSweep()
+        trigger.request()
+    }
+
+    fun stop() {
+        sweep?.cancel()
+        watchdog.stop()
+        trigger.stop()
+        controllers.stop()
+        dispatcherProvider().terminate()
+        scheduler.terminate()
+        router.terminate()
+    }
+
+    fun dispatch() = trigger.request()
+
+    fun nameTaken(name: String): Boolean =
+        orders.contains(name) || sequences.get(name) != null || plant.staticModel().objectNamed(name) != null
+
+    fun createTransportOrder(creation: TransportOrderCreation): TransportOrder {
+        val order = factory.create(creation, plant.model(), ::nameTaken, orders::contains, sequences::get)
+        orders.add(order)
+        return orders.require(order.name)
+    }
+
+    fun createOrderSequence(creation: OrderSequenceCreation): OrderSequence {
+        val name = if (creation.incompleteName) ObjectNames(context).complete(creation.name) else creation.name
+        if (nameTaken(name)) throw org.ktcs.api.error.ObjectExistsException("an object named '$name' exists already")
+        creation.intendedVehicle?.let { plant.vehicle(it) }
+        return sequences.add(
+            OrderSequence(
+                name = name,
+                creationTime = context.now(),
+                type = creation.type,
+                orderTypes = creation.orderTypes,
+                intendedVehicle = creation.intendedVehicle,
+                failureFatal = creation.failureFatal,
+                properties = creation.properties,
+            ),
+        )
+    }
+
+    fun markSequenceComplete(name: String) {
+        sequences.update(name) {
+            if (it.complete) {
+                it
+            } else {
+                it.copy(
+                    complete = true,
+                    history =
+                    it.history + HistoryEntry(context.now(), HistoryCodes.SEQUENCE_COMPLETED),
+                )
+            }
+        }
+        lifecycle.onSequenceCompleted(name)
+    }
+
+    /** Gives the DISPATCHABLE [order] to the idle [vehicle] with routed [driveOrders]. */
+    fun assign(order: String, vehicle: String, driveOrders: List<DriveOrder>) {
+        val current = orders.require(order)
+        if (current.state !=
+            TransportOrderState.DISPATCHABLE
+        ) {
+            throw IllegalStateChangeException("transport order '$order' is ${current.state}, not DISPATCHABLE")
+        }
+        orders.update(order) {
+            it.copy(
+                processingVehicle = vehicle,
+                driveOrders = driveOrders,
+                history =
+                it.history + HistoryEntry(context.now(), HistoryCodes.ORDER_ASSIGNED, vehicle),
+            )
+        }
+        orders.transition(order, TransportOrderState.BEING_PROCESSED)
+        current.wrappingSequence?.let { sequence ->
+            sequences.update(sequence) { it.copy(processingVehicle = vehicle) }
+        }
+        controllers.controller(vehicle).assign(orders.require(order))
+    }
+
+    /** Withdraws [order]: an unassigned one fails at once, an assigned one through its vehicle. */
+    fun withdraw(order: String, immediate: Boolean, disableVehicle: Boolean) {
+        val current = orders.require(order)
+        if (current.state.isFinal) {
+            throw IllegalStateChangeException(
+                "transport order '$order' is ${current.state} already",
+            )
+        }
+        val vehicle = current.processingVehicle
+        if (vehicle == null ||
+            current.state !in setOf(TransportOrderState.BEING_PROCESSED, TransportOrderState.WITHDRAWN)
+        ) {
+            if (current.state != TransportOrderState.WITHDRAWN) orders.transition(order, TransportOrderState.WITHDRAWN)
+            orders.transition(order, TransportOrderState.FAILED, "withdrawn")
+            return
+        }
+        if (disableVehicle) controllers.setIntegrationLevel(vehicle, IntegrationLevel.TO_BE_RESPECTED)
+        controllers.controller(vehicle).withdraw(immediate)
+    }
+
+    private fun track(event: KernelEvent) {
+        when (event) {
+            is TransportOrderEvent -> trackOrder(event)
+            is OrderSequenceEvent -> releaseFinishedSequence(event)
+            else -> Unit
+        }
+    }
+
+    private fun trackOrder(event: TransportOrderEvent) {
+        val order = event.current
+        if (order == null || order.state != TransportOrderState.DISPATCHABLE) {
+            (order ?: event.previous)?.let { dispatchable.remove(it.name) }
+            if (order != null && order.state.isFinal &&
+                order.processingVehicle != null
+            ) {
+                dispatchContext.onVehicleFree(order.processingVehicle!!)
+            }
+            return
+        }
+        val becameDispatchable = order.name !in dispatchable
+        dispatchable[order.name] = order
+        if (becameDispatchable) trigger.request()
+    }
+
+    private fun releaseFinishedSequence(event: OrderSequenceEvent) {
+        val sequence = event.current ?: return
+        if (!sequence.finished || event.previous?.finished == true) return
+        plant.vehicles().filter { it.orderSequence == sequence.name }.forEach { vehicle ->
+            plant.updateVehicle(vehicle.name) { it.copy(orderSequence = null) }
+        }
+        trigger.request()
+    }
+
+    private fun scheduleSweep() {
+        sweep = context.schedule(options.sweepIntervalMillis) {
+            val cutoff = context.now().toEpochMilli() - options.sweepAgeMillis
+            orders.removeFinishedBefore(cutoff)
+            sequences.removeFinishedBefore(cutoff)
+            scheduleSweep()
+        }
+    }
+}

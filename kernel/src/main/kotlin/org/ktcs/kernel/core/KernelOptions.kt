@@ -1,0 +1,21 @@
+package org.ktcs.kernel.core
+
+import org.ktcs.api.model.IntegrationLevel
+
+/** The kernel's own settings, as plain values (mapped from the configuration in the Koin module). */
+data class KernelOptions(
+    /** Enable every vehicle's driver at start-up (openTCS: kernelapp.autoEnableDriversOnStartup). */
+    val enableDriversOnStart: Boolean = true,
+    /** The integration level vehicles start with; TO_BE_UTILIZED lets them take orders at once. */
+    val initialIntegrationLevel: IntegrationLevel = IntegrationLevel.TO_BE_UTILIZED,
+    /** The dispatcher's safety-net period; it runs on events anyway (openTCS: idleVehicleRedispatchingInterval). */
+    val redispatchIntervalMillis: Long = 10_000,
+    /** Mark orders whose destinations no vehicle can connect UNROUTABLE at once. */
+    val dismissUnroutableOrders: Boolean = true,
+    /** How often final orders are swept out (openTCS: orderpool.sweepInterval). */
+    val sweepIntervalMillis: Long = 60_000,
+    /** How old a final order must be to be swept out (openTCS: orderpool.sweepAge). */
+    val sweepAgeMillis: Long = 86_400_000,
+    /** How often the deadlock watchdog looks for vehicles waiting for each other in a cycle. */
+    val deadlockCheckIntervalMillis: Long = 1_000,
+)

@@ -1,0 +1,70 @@
+package org.ktcs.kernel.events
+
+import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.channels.ReceiveChannel
+import org.ktcs.api.event.KernelEvent
+import java.util.concurrent.CopyOnWriteArrayList
+
+/**
+ * Distributes kernel events, in the order they are published (always from the kernel context).
+ *
+ * Kernel components listen synchronously ([listen]): they react before the next event is published. Everybody else
+ * ([subscribe]: web clients, XML status channel, tests) gets a bounded buffer of its own; one that falls too far
+ * behind is cut off with [SubscriberTooSlowException] instead of slowing the kernel or the other subscribers, and
+ * can subscribe again and start from a fresh snapshot.
+ */
+class EventBus {
+    private val listeners = CopyOnWriteArrayList<(KernelEvent) -> Unit>()
+    private val subscribers = CopyOnWriteArrayList<Channel<KernelEvent>>()
+
+    // Confined to the kernel context, like every publish.
+    private val pending = ArrayDeque<KernelEvent>()
+    private var delivering = false
+
+    /** Calls [listener] for every event, in the kernel context, before the event reaches subscribers. */
+    fun listen(listener: (KernelEvent) -> Unit) {
+        listeners += listener
+    }
+
+    /** A new subscription that receives every event published from now on, buffering up to [capacity]. */
+    fun subscribe(capacity: Int = DEFAULT_CAPACITY): ReceiveChannel<KernelEvent> {
+        val channel = Channel<KernelEvent>(capacity)
+        channel.invokeOnClose { subscribers.remove(channel) }
+        subscribers += channel
+        return channel
+    }
+
+    /**
+     * Publishes [event]. An event published by a listener while another is being delivered waits until that one
+     * has reached everybody, so every listener and subscriber sees all events in the same order.
+     */
+    fun publish(event: KernelEvent) {
+        pending.addLast(event)
+        if (delivering) return
+        delivering = true
+        try {
+            while (pending.isNotEmpty()) deliver(pending.removeFirst())
+        } finally {
+            delivering = false
+        }
+    }
+
+    private fun deliver(event: KernelEvent) {
+        listeners.forEach { it(event) }
+        subscribers.forEach { channel ->
+            val sent = channel.trySend(event)
+            if (sent.isFailure && !sent.isClosed) {
+                channel.close(SubscriberTooSlowException())
+            }
+        }
+    }
+
+    companion object {
+        const val DEFAULT_CAPACITY = 10_000
+    }
+}
+
+/** A subscriber fell so far behind that it missed events; it should subscribe again and re-read the state. */
+class SubscriberTooSlowException : RuntimeException(
+    "event subscriber too slow: its buffer overflowed and events were lost",
+)

@@ -1,0 +1,58 @@
+package org.ktcs.kernel.services
+
+import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.consumeAsFlow
+import kotlinx.coroutines.flow.emitAll
+import kotlinx.coroutines.flow.flow
+import org.ktcs.api.event.KernelEvent
+import org.ktcs.api.event.UserNotification
+import org.ktcs.api.order.Route
+import org.ktcs.api.service.DispatcherService
+import org.ktcs.api.service.KernelServices
+import org.ktcs.api.service.NotificationService
+import org.ktcs.api.service.PlantModelService
+import org.ktcs.api.service.RouterService
+import org.ktcs.api.service.TransportOrderService
+import org.ktcs.api.service.VehicleService
+import org.ktcs.kernel.core.KernelCore
+
+/** The kernel's services, each call carried into the kernel context. */
+class StandardKernelServices(private val kernel: KernelCore) : KernelServices {
+    override val transportOrders: TransportOrderService = StandardTransportOrderService(kernel)
+    override val dispatcher: DispatcherService = StandardDispatcherService(kernel)
+    override val vehicles: VehicleService = StandardVehicleService(kernel)
+    override val plantModel: PlantModelService = StandardPlantModelService(kernel)
+
+    override val notifications: NotificationService = object : NotificationService {
+        override suspend fun publish(
+            notification: UserNotification,
+        ) = kernel.context.call { kernel.notifications.publish(notification) }
+
+        override suspend fun notifications(): List<UserNotification> = kernel.context.call {
+            kernel.notifications.recent()
+        }
+    }
+
+    override val router: RouterService = object : RouterService {
+        override suspend fun computeRoutes(
+            vehicle: String,
+            sourcePoint: String?,
+            destinationPoints: List<String>,
+            resourcesToAvoid: Set<String>,
+            maxRoutes: Int,
+        ): Map<String, List<Route>> = kernel.context.call {
+            val current = kernel.plant.vehicle(vehicle)
+            val source = sourcePoint ?: current.currentPosition
+                ?: throw org.ktcs.api.error.InvalidRequestException(
+                    "vehicle '$vehicle' has no known position; give a source point",
+                )
+            (destinationPoints + source).forEach { point ->
+                kernel.plant.staticModel().point(point)
+                    ?: throw org.ktcs.api.error.ObjectUnknownException("unknown point '$point'")
+            }
+            destinationPoints.associateWith { kernel.router.routes(current, source, it, resourcesToAvoid, maxRoutes) }
+        }
+    }
+
+    override fun events(): Flow<KernelEvent> = flow { emitAll(kernel.events.subscribe().consumeAsFlow()) }
+}

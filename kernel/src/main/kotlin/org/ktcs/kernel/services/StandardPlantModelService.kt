@@ -1,0 +1,24 @@
+package org.ktcs.kernel.services
+
+import org.ktcs.api.model.PlantModel
+import org.ktcs.api.service.PlantModelService
+import org.ktcs.kernel.core.KernelCore
+
+class StandardPlantModelService(private val kernel: KernelCore) : PlantModelService {
+    override suspend fun plantModel(): PlantModel = kernel.context.call { kernel.plant.model() }
+
+    override suspend fun setPathLocked(path: String, locked: Boolean) = kernel.context.call {
+        kernel.plant.setPathLocked(path, locked)
+        kernel.router.updateTopology(kernel.plant.model())
+        kernel.dispatch()
+    }
+
+    override suspend fun setLocationLocked(location: String, locked: Boolean) = kernel.context.call {
+        kernel.plant.setLocationLocked(location, locked)
+        kernel.dispatch()
+    }
+
+    override suspend fun updateRoutingTopology() = kernel.context.call {
+        kernel.router.updateTopology(kernel.plant.model())
+    }
+}

@@ -1,0 +1,80 @@
+package org.ktcs.kernel.services
+
+import org.ktcs.api.driver.DriverMessage
+import org.ktcs.api.error.InvalidRequestException
+import org.ktcs.api.model.AcceptableOrderType
+import org.ktcs.api.model.EnergyLevelThresholdSet
+import org.ktcs.api.model.IntegrationLevel
+import org.ktcs.api.model.ProcState
+import org.ktcs.api.model.Vehicle
+import org.ktcs.api.service.DriverAttachment
+import org.ktcs.api.service.VehicleService
+import org.ktcs.kernel.core.KernelCore
+
+class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
+    override suspend fun vehicles(procState: ProcState?): List<Vehicle> =
+        kernel.context.call { kernel.plant.vehicles().filter { procState == null || it.procState == procState } }
+
+    override suspend fun vehicle(name: String): Vehicle? = kernel.context.call { kernel.plant.vehicleOrNull(name) }
+
+    override suspend fun setIntegrationLevel(vehicle: String, level: IntegrationLevel) =
+        kernel.context.call { kernel.controllers.setIntegrationLevel(vehicle, level) }
+
+    override suspend fun setPaused(vehicle: String, paused: Boolean) = kernel.context.call {
+        kernel.controllers.setPaused(vehicle, paused)
+    }
+
+    override suspend fun setAllowedOrderTypes(vehicle: String, types: Set<String>) = update(vehicle) {
+        it.copy(allowedOrderTypes = types)
+    }
+
+    override suspend fun setAcceptableOrderTypes(vehicle: String, types: Set<AcceptableOrderType>) =
+        update(vehicle) { it.copy(acceptableOrderTypes = types) }
+
+    override suspend fun setEnergyLevelThresholdSet(vehicle: String, thresholds: EnergyLevelThresholdSet) {
+        val values =
+            listOf(thresholds.critical, thresholds.good, thresholds.sufficientlyRecharged, thresholds.fullyRecharged)
+        if (values.any {
+                it !in 0..100
+            }
+        ) {
+            throw InvalidRequestException(
+                "energy thresholds of vehicle '$vehicle' must be between 0 and 100: $thresholds",
+            )
+        }
+        if (thresholds.critical >
+            thresholds.good
+        ) {
+            throw InvalidRequestException(
+                "vehicle '$vehicle': critical ${thresholds.critical} is above good ${thresholds.good}",
+            )
+        }
+        if (thresholds.sufficientlyRecharged > thresholds.fullyRecharged) {
+            throw InvalidRequestException(
+                "vehicle '$vehicle': sufficiently recharged ${thresholds.sufficientlyRecharged} is above fully recharged ${thresholds.fullyRecharged}",
+            )
+        }
+        update(vehicle) { it.copy(energyLevelThresholdSet = thresholds) }
+    }
+
+    override suspend fun setEnvelopeKey(vehicle: String, key: String?) = update(vehicle) { it.copy(envelopeKey = key) }
+
+    override suspend fun driverAttachment(vehicle: String): DriverAttachment = kernel.context.call {
+        kernel.controllers.attachment(vehicle)
+    }
+
+    override suspend fun attachDriver(vehicle: String, driver: String) = kernel.context.call {
+        kernel.controllers.attach(vehicle, driver)
+    }
+
+    override suspend fun setDriverEnabled(vehicle: String, enabled: Boolean) =
+        kernel.context.call { kernel.controllers.setDriverEnabled(vehicle, enabled) }
+
+    override suspend fun sendDriverMessage(vehicle: String, message: DriverMessage) =
+        kernel.context.call { kernel.controllers.sendMessage(vehicle, message) }
+
+    private suspend fun update(vehicle: String, change: (Vehicle) -> Vehicle) = kernel.context.call {
+        kernel.plant.updateVehicle(vehicle, change)
+        kernel.dispatch()
+    }
+}

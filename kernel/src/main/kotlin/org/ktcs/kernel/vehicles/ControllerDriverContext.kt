@@ -1,0 +1,98 @@
+package org.ktcs.kernel.vehicles
+
+import org.ktcs.api.driver.DriverContext
+import org.ktcs.api.driver.MovementCommand
+import org.ktcs.api.event.DriverEvent
+import org.ktcs.api.event.NotificationLevel
+import org.ktcs.api.kernel.KernelClock
+import org.ktcs.api.model.LoadHandlingDevice
+import org.ktcs.api.model.PlantModel
+import org.ktcs.api.model.Position
+import org.ktcs.api.model.Vehicle
+import org.ktcs.api.model.VehicleState
+
+/**
+ * A driver's view of the kernel. Every report is queued into the kernel context, even one made from it: a driver
+ * may report from inside a call the kernel made (e.g. a command it completes at once), and the controller must
+ * not be re-entered then. Queued reports keep the order they were made in.
+ */
+class ControllerDriverContext(
+    private val controller: VehicleController,
+    private val env: VehicleEnvironment,
+) : DriverContext {
+    private val vehicleName = controller.name
+
+    override val clock: KernelClock get() = env.context
+
+    override val plantModel: PlantModel get() = env.plant.model()
+
+    override fun vehicle(): Vehicle = env.plant.vehicle(vehicleName)
+
+    override fun reportPosition(point: String?) = later {
+        if (point != null && env.plant.staticModel().point(point) == null) {
+            env.notifications.publish(
+                vehicleName,
+                NotificationLevel.IMPORTANT,
+                "vehicle $vehicleName reported unknown point '$point'",
+            )
+        } else {
+            controller.onPositionReported(point)
+        }
+    }
+
+    override fun reportPrecisePosition(position: Position?, orientationAngle: Double) = later {
+        env.plant.updateVehicle(vehicleName) {
+            it.copy(precisePosition = position, orientationAngle = orientationAngle)
+        }
+    }
+
+    override fun reportState(state: VehicleState) = later {
+        val previous = env.plant.vehicle(vehicleName).state
+        env.plant.updateVehicle(vehicleName) { it.withState(state, env) }
+        if (previous != state) env.vehicleMayBeAvailable()
+    }
+
+    override fun reportEnergyLevel(percent: Int) = later {
+        val previous = env.plant.vehicle(vehicleName).energyLevel
+        env.plant.updateVehicle(vehicleName) { it.copy(energyLevel = percent.coerceIn(0, 100)) }
+        if (previous != percent) env.vehicleMayBeAvailable()
+    }
+
+    override fun reportLoadHandlingDevices(devices: List<LoadHandlingDevice>) = later {
+        env.plant.updateVehicle(vehicleName) { it.copy(loadHandlingDevices = devices) }
+    }
+
+    override fun commandExecuted(command: MovementCommand) = later { controller.onCommandExecuted(command) }
+
+    override fun commandFailed(command: MovementCommand) = later { controller.onCommandFailed(command) }
+
+    override fun setVehicleProperty(key: String, value: String?) = later {
+        env.plant.updateVehicle(vehicleName) { it.copy(properties = it.properties.with(key, value)) }
+    }
+
+    override fun setTransportOrderProperty(key: String, value: String?) = later {
+        controller.transportOrder?.let { order ->
+            env.orders.update(order) { it.copy(properties = it.properties.with(key, value)) }
+        }
+    }
+
+    override fun publishEvent(type: String, payload: Map<String, String>) = later {
+        env.events.publish(DriverEvent(vehicleName, type, payload, env.context.now()))
+    }
+
+    override fun notifyUser(level: NotificationLevel, text: String) = later {
+        env.notifications.publish(vehicleName, level, text)
+    }
+
+    private fun later(action: () -> Unit) {
+        env.context.execute(action)
+    }
+
+    private fun Map<String, String>.with(key: String, value: String?): Map<String, String> = if (value ==
+        null
+    ) {
+        this - key
+    } else {
+        this + (key to value)
+    }
+}

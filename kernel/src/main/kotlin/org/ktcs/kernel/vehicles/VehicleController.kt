@@ -1,0 +1,288 @@
+package org.ktcs.kernel.vehicles
+
+import org.ktcs.api.driver.MovementCommand
+import org.ktcs.api.driver.VehicleDriver
+import org.ktcs.api.event.NotificationLevel
+import org.ktcs.api.model.IntegrationLevel
+import org.ktcs.api.model.ProcState
+import org.ktcs.api.order.DriveOrderState
+import org.ktcs.api.order.HistoryEntry
+import org.ktcs.api.order.Route
+import org.ktcs.api.order.TransportOrder
+import org.ktcs.api.order.TransportOrderState
+import org.ktcs.api.scheduling.SchedulerClient
+import org.ktcs.kernel.workingset.HistoryCodes
+import org.slf4j.LoggerFactory
+
+/**
+ * Carries one vehicle through its transport order: claims the route, asks the scheduler for the resources of one
+ * movement command at a time, sends each granted command to the driver, gives back what lies behind the vehicle,
+ * and moves on drive order by drive order until the order is finished or withdrawn. Confined to the kernel context.
+ */
+class VehicleController(override val name: String, private val env: VehicleEnvironment) : SchedulerClient {
+    private val log = LoggerFactory.getLogger(VehicleController::class.java)
+    private val held = HeldResources()
+    private val remaining = ArrayDeque<PlannedCommand>()
+    private val sent = ArrayDeque<PlannedCommand>()
+    private var waiting: PlannedCommand? = null
+    private var currentOrder: String? = null
+    private var withdrawing = false
+
+    var driver: VehicleDriver? = null
+        private set
+    var driverName: String? = null
+        private set
+
+    /** The name of the order this controller is working on, if any. */
+    val transportOrder: String? get() = currentOrder
+
+    fun attach(driverName: String, driver: VehicleDriver) {
+        check(currentOrder == null) {
+            "vehicle '$name' is processing order '$currentOrder'; withdraw it before changing the driver"
+        }
+        this.driver?.disable()
+        this.driver = driver
+        this.driverName = driverName
+    }
+
+    /** Starts [order], which is BEING_PROCESSED by this vehicle with a route for every drive order. */
+    fun assign(order: TransportOrder) {
+        check(currentOrder == null) { "vehicle '$name' is already processing '$currentOrder'" }
+        currentOrder = order.name
+        withdrawing = false
+        env.plant.updateVehicle(name) {
+            it.copy(
+                transportOrder = order.name,
+                orderSequence = order.wrappingSequence ?: it.orderSequence,
+            ).withProcState(ProcState.PROCESSING_ORDER, env)
+        }
+        startDriveOrder(0)
+    }
+
+    private fun startDriveOrder(index: Int) {
+        val order = env.orders.require(currentOrder!!)
+        val driveOrder = order.driveOrders[index]
+        val route = checkNotNull(driveOrder.route) { "drive order ${driveOrder.name} of '${order.name}' has no route" }
+        env.orders.update(order.name) { current ->
+            current.copy(
+                currentDriveOrderIndex = index,
+                currentRouteStepIndex = -1,
+                driveOrders = current.driveOrders.mapIndexed { i, it ->
+                    if (i ==
+                        index
+                    ) {
+                        it.copy(state = DriveOrderState.TRAVELLING)
+                    } else {
+                        it
+                    }
+                },
+            )
+        }
+        remaining.clear()
+        remaining.addAll(plannedCommands(order, driveOrder, route) { env.plant.staticModel().location(it)?.name })
+        env.scheduler().claim(this, remaining.map { it.resources })
+        publishResources()
+        requestNext()
+    }
+
+    private fun requestNext() {
+        val driver = driver ?: return
+        if (withdrawing || waiting != null || !driver.isEnabled) return
+        if (sent.size >= driver.commandQueueCapacity) return
+        val next = remaining.removeFirstOrNull() ?: return
+        waiting = next
+        env.scheduler().allocate(this, next.resources)
+    }
+
+    override fun onAllocationGranted(resources: Set<String>): Boolean {
+        val granted = waiting?.takeIf { it.resources == resources } ?: return false
+        waiting = null
+        if (driver?.enqueueCommand(granted.command) != true) {
+            remaining.addFirst(granted)
+            return false
+        }
+        held.add(resources)
+        sent.addLast(granted)
+        publishResources()
+        requestNext()
+        return true
+    }
+
+    fun onCommandExecuted(command: MovementCommand) {
+        val done = sent.firstOrNull()
+        if (done?.command != command) {
+            log.warn("vehicle={} reported an unexpected command executed: {}", name, command.step)
+            return
+        }
+        sent.removeFirst()
+        env.scheduler().free(this, held.passed(done.resources, command.step.destinationPoint))
+        env.orders.update(command.transportOrder) { it.copy(currentRouteStepIndex = command.step.routeIndex) }
+        publishResources()
+        when {
+            withdrawing -> if (sent.isEmpty()) endOrder(TransportOrderState.FAILED)
+            command.finalMovement -> finishDriveOrder()
+            else -> requestNext()
+        }
+    }
+
+    fun onCommandFailed(command: MovementCommand) {
+        env.notifications.publish(
+            name,
+            NotificationLevel.IMPORTANT,
+            "vehicle $name failed to carry out ${command.step.path ?: command.step.destinationPoint} of order ${command.transportOrder}; the order is withdrawn",
+        )
+        withdraw(immediate = true)
+    }
+
+    private fun finishDriveOrder() {
+        val order = env.orders.require(currentOrder!!)
+        val index = order.currentDriveOrderIndex
+        env.orders.update(order.name) { current ->
+            current.copy(
+                driveOrders = current.driveOrders.mapIndexed { i, it ->
+                    if (i ==
+                        index
+                    ) {
+                        it.copy(state = DriveOrderState.FINISHED)
+                    } else {
+                        it
+                    }
+                },
+                history =
+                current.history +
+                    HistoryEntry(
+                        env.context.now(),
+                        HistoryCodes.ORDER_FINISHED_DRIVE_ORDER,
+                        current.driveOrders[index].name,
+                    ),
+            )
+        }
+        if (index + 1 < order.driveOrders.size) startDriveOrder(index + 1) else endOrder(TransportOrderState.FINISHED)
+    }
+
+    /** Withdraws the current order: at once ([immediate]), or after the commands already sent are carried out. */
+    fun withdraw(immediate: Boolean) {
+        val order = currentOrder ?: return
+        if (env.orders.require(order).state ==
+            TransportOrderState.BEING_PROCESSED
+        ) {
+            env.orders.transition(order, TransportOrderState.WITHDRAWN)
+        }
+        withdrawing = true
+        remaining.clear()
+        if (waiting != null) {
+            env.scheduler().clearPendingAllocations(this)
+            waiting = null
+        }
+        if (immediate) {
+            driver?.clearCommandQueue()
+            sent.clear()
+        }
+        env.scheduler().claim(this, sent.map { it.resources })
+        if (sent.isEmpty()) endOrder(TransportOrderState.FAILED)
+    }
+
+    private fun endOrder(state: TransportOrderState) {
+        val order = currentOrder!!
+        currentOrder = null
+        withdrawing = false
+        remaining.clear()
+        env.scheduler().unclaim(this)
+        releaseAllButPosition()
+        // The vehicle is free before the order's final state is published: an order reserved for it may be
+        // assigned right then.
+        env.plant.updateVehicle(name) { it.copy(transportOrder = null).withProcState(ProcState.IDLE, env) }
+        env.orders.transition(order, state)
+        env.vehicleMayBeAvailable()
+    }
+
+    /** The vehicle reported its position; outside an order that is where it holds resources. */
+    fun onPositionReported(point: String?) {
+        val vehicle = env.plant.updateVehicle(name) { it.copy(currentPosition = point) }
+        if (currentOrder == null) occupyPosition(vehicle.integrationLevel)
+    }
+
+    /** Holds exactly the vehicle's current point, as its integration level asks. */
+    fun occupyPosition(level: IntegrationLevel) {
+        val point = env.plant.vehicle(name).currentPosition
+        val wanted = if (point != null && level >= IntegrationLevel.TO_BE_RESPECTED) setOf(point) else emptySet()
+        if (held.asList() == listOfNotNull(wanted.takeIf { it.isNotEmpty() })) return
+        env.scheduler().free(this, held.releaseAllBut(emptySet()))
+        if (wanted.isNotEmpty()) {
+            val others = env.scheduler().allocations().filter { (client, resources) ->
+                client != name &&
+                    point in resources
+            }.keys
+            if (others.isNotEmpty()) {
+                env.notifications.publish(
+                    name,
+                    NotificationLevel.IMPORTANT,
+                    "vehicle $name reports position $point, which ${others.joinToString()} holds",
+                )
+            }
+            env.scheduler().allocateNow(this, wanted)
+            held.reset(wanted)
+        }
+        publishResources()
+    }
+
+    private fun releaseAllButPosition() {
+        val position = env.plant.vehicle(name).currentPosition
+        env.scheduler().free(this, held.releaseAllBut(setOfNotNull(position)))
+        publishResources()
+    }
+
+    private fun publishResources() {
+        env.plant.updateVehicle(name) {
+            it.copy(
+                allocatedResources = held.asList(),
+                claimedResources = (listOfNotNull(waiting) + remaining).map { c ->
+                    c.resources
+                },
+            )
+        }
+    }
+
+    /**
+     * Routes the rest of the current drive order anew from where the vehicle will be after the commands it was
+     * already sent, around [avoid]; returns whether a route was found. Used to break deadlocks and on request.
+     */
+    fun reroute(avoid: Set<String>): Boolean {
+        val order = currentOrder?.let(env.orders::require) ?: return false
+        if (withdrawing) return false
+        val driveOrder = order.driveOrders[order.currentDriveOrderIndex]
+        val oldRoute = driveOrder.route ?: return false
+        val start =
+            sent.lastOrNull()?.command?.step?.destinationPoint ?: env.plant.vehicle(name).currentPosition
+                ?: return false
+        val target = oldRoute.finalDestinationPoint ?: return false
+        if (start == target) return false
+        val found = env.router().routes(env.plant.vehicle(name), start, target, avoid).firstOrNull() ?: return false
+        val kept = oldRoute.steps.take(order.currentRouteStepIndex + 1 + sent.size)
+        val route =
+            Route(kept + found.steps.mapIndexed { i, step -> step.copy(routeIndex = kept.size + i) }, found.costs)
+        val rerouted = driveOrder.copy(route = route)
+        env.orders.update(order.name) { current ->
+            current.copy(driveOrders = current.driveOrders.map { if (it.name == rerouted.name) rerouted else it })
+        }
+        if (waiting != null) {
+            env.scheduler().clearPendingAllocations(this)
+            waiting = null
+        }
+        remaining.clear()
+        remaining.addAll(
+            plannedCommands(order, rerouted, route) {
+                env.plant.staticModel().location(it)?.name
+            }.drop(kept.size),
+        )
+        env.scheduler().claim(this, remaining.map { it.resources })
+        publishResources()
+        requestNext()
+        return true
+    }
+
+    /** The driver can take more commands now (e.g. it was enabled). */
+    fun onDriverReady() {
+        requestNext()
+    }
+}

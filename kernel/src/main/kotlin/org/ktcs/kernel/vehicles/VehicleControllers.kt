@@ -1,0 +1,131 @@
+package org.ktcs.kernel.vehicles
+
+import org.ktcs.api.driver.DriverMessage
+import org.ktcs.api.driver.VehicleDriverFactory
+import org.ktcs.api.error.IllegalStateChangeException
+import org.ktcs.api.error.InvalidRequestException
+import org.ktcs.api.error.ObjectUnknownException
+import org.ktcs.api.model.IntegrationLevel
+import org.ktcs.api.service.DriverAttachment
+import org.slf4j.LoggerFactory
+
+/**
+ * One controller per vehicle, and the drivers attached to them. A vehicle gets the driver its property
+ * `tcs:preferredAdapterClass` names (a factory's name or class name), else the first factory that can drive it.
+ * Confined to the kernel context.
+ */
+class VehicleControllers(private val env: VehicleEnvironment, private val factories: List<VehicleDriverFactory>) {
+    private val log = LoggerFactory.getLogger(VehicleControllers::class.java)
+    private val controllers = LinkedHashMap<String, VehicleController>()
+    private val contexts = HashMap<String, ControllerDriverContext>()
+
+    fun controller(vehicle: String): VehicleController =
+        controllers[vehicle] ?: throw ObjectUnknownException("unknown vehicle '$vehicle'")
+
+    fun all(): Collection<VehicleController> = controllers.values
+
+    /** Creates the controllers for the vehicles of the plant and attaches their preferred drivers. */
+    fun start(enableDrivers: Boolean, integrationLevel: IntegrationLevel) {
+        env.plant.vehicles().forEach { vehicle ->
+            val controller = VehicleController(vehicle.name, env)
+            controllers[vehicle.name] = controller
+            contexts[vehicle.name] = ControllerDriverContext(controller, env)
+            env.plant.updateVehicle(vehicle.name) { it.copy(integrationLevel = integrationLevel) }
+            preferredFactory(vehicle.name)?.let { factory ->
+                attach(vehicle.name, factory.name)
+                if (enableDrivers) setDriverEnabled(vehicle.name, true)
+            }
+        }
+        log.info(
+            "vehicles={} drivers={}",
+            controllers.size,
+            controllers.values.joinToString {
+                "${it.name}:${it.driverName ?: "none"}"
+            },
+        )
+    }
+
+    fun stop() {
+        controllers.values.forEach { it.driver?.disable() }
+    }
+
+    fun attachment(vehicle: String): DriverAttachment {
+        val controller = controller(vehicle)
+        return DriverAttachment(
+            vehicle,
+            available(vehicle).map { it.name },
+            controller.driverName,
+            controller.driver?.isEnabled == true,
+        )
+    }
+
+    fun attach(vehicle: String, driverName: String) {
+        val controller = controller(vehicle)
+        val factory = available(vehicle).firstOrNull { it.name == driverName }
+            ?: throw InvalidRequestException(
+                "no driver '$driverName' for vehicle '$vehicle'; available: ${available(vehicle).joinToString {
+                    it.name
+                }.ifEmpty { "none" }}",
+            )
+        if (controller.transportOrder !=
+            null
+        ) {
+            throw IllegalStateChangeException(
+                "vehicle '$vehicle' is processing order '${controller.transportOrder}'",
+            )
+        }
+        controller.attach(factory.name, factory.create(vehicle, contexts.getValue(vehicle)))
+    }
+
+    fun setDriverEnabled(vehicle: String, enabled: Boolean) {
+        val controller = controller(vehicle)
+        val driver = controller.driver ?: throw IllegalStateChangeException("vehicle '$vehicle' has no driver attached")
+        if (enabled) {
+            driver.enable()
+            controller.onDriverReady()
+        } else {
+            if (controller.transportOrder != null) controller.withdraw(immediate = true)
+            driver.disable()
+        }
+    }
+
+    fun sendMessage(vehicle: String, message: DriverMessage) {
+        val driver =
+            controller(vehicle).driver ?: throw IllegalStateChangeException("vehicle '$vehicle' has no driver attached")
+        driver.processMessage(message)
+    }
+
+    fun setIntegrationLevel(vehicle: String, level: IntegrationLevel) {
+        val controller = controller(vehicle)
+        if (level <= IntegrationLevel.TO_BE_NOTICED && controller.transportOrder != null) {
+            throw IllegalStateChangeException(
+                "vehicle '$vehicle' is processing order '${controller.transportOrder}'; withdraw it before setting $level",
+            )
+        }
+        env.plant.updateVehicle(vehicle) { it.copy(integrationLevel = level) }
+        controller.occupyPosition(level)
+        env.vehicleMayBeAvailable()
+    }
+
+    fun setPaused(vehicle: String, paused: Boolean) {
+        val controller = controller(vehicle)
+        env.plant.updateVehicle(vehicle) { it.copy(paused = paused) }
+        env.scheduler().setPaused(controller, paused)
+        controller.driver?.onPaused(paused)
+        if (!paused) env.vehicleMayBeAvailable()
+    }
+
+    private fun available(vehicle: String): List<VehicleDriverFactory> =
+        factories.filter { it.canDrive(vehicle, contexts.getValue(vehicle)) }
+
+    private fun preferredFactory(vehicle: String): VehicleDriverFactory? {
+        val preferred = env.plant.vehicle(vehicle).properties[PREFERRED_DRIVER]
+        val candidates = available(vehicle)
+        return candidates.firstOrNull { preferred != null && (it.name == preferred || it.javaClass.name == preferred) }
+            ?: candidates.firstOrNull()
+    }
+
+    companion object {
+        const val PREFERRED_DRIVER = "tcs:preferredAdapterClass"
+    }
+}

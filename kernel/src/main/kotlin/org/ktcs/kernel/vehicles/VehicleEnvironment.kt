@@ -1,0 +1,22 @@
+package org.ktcs.kernel.vehicles
+
+import org.ktcs.api.routing.Router
+import org.ktcs.api.scheduling.Scheduler
+import org.ktcs.kernel.context.KernelContext
+import org.ktcs.kernel.events.EventBus
+import org.ktcs.kernel.events.Notifications
+import org.ktcs.kernel.workingset.PlantState
+import org.ktcs.kernel.workingset.TransportOrderPool
+
+/** What vehicle controllers share of the kernel. */
+class VehicleEnvironment(
+    val context: KernelContext,
+    val events: EventBus,
+    val plant: PlantState,
+    val orders: TransportOrderPool,
+    val notifications: Notifications,
+    val scheduler: () -> Scheduler,
+    val router: () -> Router,
+    /** Called when a vehicle may have become free for work, so the dispatcher runs. */
+    val vehicleMayBeAvailable: () -> Unit,
+)

@@ -1,0 +1,147 @@
+package org.ktcs.kernel.core
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.shouldBe
+import org.koin.dsl.bind
+import org.koin.dsl.module
+import org.ktcs.api.driver.VehicleDriverFactory
+import org.ktcs.api.order.Destination
+import org.ktcs.api.order.OrderSequenceCreation
+import org.ktcs.api.order.TransportOrderCreation
+import org.ktcs.api.order.TransportOrderState
+import org.ktcs.kernel.app.PlantModelLoader
+import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.simulation.SimulationKernel
+
+/** Withdrawals, dependencies, sequences and locks, through the kernel on virtual time with test vehicles. */
+class KernelOperationsTest : FunSpec({
+    val config = ConfigLoader().load(
+        null,
+        emptyMap(),
+        listOf("dispatcher.parkIdleVehicles=false", "dispatcher.rechargeIdleVehicles=false"),
+    )
+    val drivers = module { single { StepDriverFactory() } bind VehicleDriverFactory::class }
+
+    fun kernel() = SimulationKernel(PlantModelLoader.loadDemo().model, config, listOf(drivers))
+
+    fun SimulationKernel.run(action: KernelCore.() -> Unit) {
+        var done = false
+        context.execute {
+            core.action()
+            done = true
+        }
+        context.runUntil { done }
+    }
+
+    fun SimulationKernel.runFor(millis: Long) = context.runUntilTime(context.elapsedMillis() + millis)
+
+    fun SimulationKernel.state(order: String) = core.orders.require(order).state
+
+    val longTrip = listOf(Destination("Goods in north 01", "Load cargo"), Destination("Goods out 02", "Unload cargo"))
+
+    test("an order waits for its dependency to finish before it is dispatched") {
+        kernel().use { kernel ->
+            kernel.run {
+                createTransportOrder(TransportOrderCreation("First", longTrip, intendedVehicle = "Vehicle-01"))
+                createTransportOrder(TransportOrderCreation("Second", longTrip, dependencies = setOf("First")))
+            }
+            kernel.state("Second") shouldBe TransportOrderState.ACTIVE
+            kernel.context.runUntil { kernel.state("First") == TransportOrderState.FINISHED }
+            kernel.state("Second") shouldBe TransportOrderState.DISPATCHABLE
+            kernel.context.runUntil { kernel.state("Second").isFinal }
+            kernel.state("Second") shouldBe TransportOrderState.FINISHED
+        }
+    }
+
+    test("immediate withdrawal fails the order at once and frees everything but the vehicle's position") {
+        kernel().use { kernel ->
+            kernel.run { createTransportOrder(TransportOrderCreation("T", longTrip, intendedVehicle = "Vehicle-02")) }
+            kernel.runFor(3_000)
+            kernel.state("T") shouldBe TransportOrderState.BEING_PROCESSED
+            kernel.run { withdraw("T", immediate = true, disableVehicle = false) }
+
+            kernel.state("T") shouldBe TransportOrderState.FAILED
+            val vehicle = kernel.core.plant.vehicle("Vehicle-02")
+            vehicle.transportOrder shouldBe null
+            vehicle.allocatedResources shouldBe listOf(setOf(vehicle.currentPosition!!))
+            kernel.core.scheduler.allocations()["Vehicle-02"] shouldBe setOf(vehicle.currentPosition!!)
+        }
+    }
+
+    test("regular withdrawal lets the vehicle finish what it was sent, then fails the order") {
+        kernel().use { kernel ->
+            kernel.run { createTransportOrder(TransportOrderCreation("T", longTrip, intendedVehicle = "Vehicle-03")) }
+            kernel.runFor(3_000)
+            kernel.run { withdraw("T", immediate = false, disableVehicle = true) }
+            kernel.state("T") shouldBe TransportOrderState.WITHDRAWN
+            kernel.context.runUntil { kernel.state("T").isFinal }
+            kernel.state("T") shouldBe TransportOrderState.FAILED
+            kernel.core.plant.vehicle("Vehicle-03").integrationLevel.name shouldBe "TO_BE_RESPECTED"
+        }
+    }
+
+    test("an unassigned order is withdrawn straight to FAILED") {
+        kernel().use { kernel ->
+            kernel.run {
+                createTransportOrder(TransportOrderCreation("Blocker", longTrip, intendedVehicle = "Vehicle-01"))
+                createTransportOrder(TransportOrderCreation("T", longTrip, dependencies = setOf("Blocker")))
+                withdraw("T", immediate = false, disableVehicle = false)
+            }
+            kernel.state("T") shouldBe TransportOrderState.FAILED
+        }
+    }
+
+    test("a failure-fatal sequence fails the orders after a failed one and finishes when complete") {
+        kernel().use { kernel ->
+            kernel.run {
+                createOrderSequence(OrderSequenceCreation("Seq", failureFatal = true, intendedVehicle = "Vehicle-04"))
+                createTransportOrder(
+                    TransportOrderCreation("S1", longTrip, intendedVehicle = "Vehicle-04", wrappingSequence = "Seq"),
+                )
+                createTransportOrder(
+                    TransportOrderCreation("S2", longTrip, intendedVehicle = "Vehicle-04", wrappingSequence = "Seq"),
+                )
+                markSequenceComplete("Seq")
+            }
+            kernel.runFor(3_000)
+            kernel.run { withdraw("S1", immediate = true, disableVehicle = false) }
+
+            kernel.state("S2") shouldBe TransportOrderState.FAILED
+            val sequence = kernel.core.sequences.require("Seq")
+            sequence.orders shouldBe listOf("S1", "S2")
+            sequence.finished shouldBe true
+        }
+    }
+
+    test("orders of a sequence are processed in order by one vehicle") {
+        kernel().use { kernel ->
+            kernel.run {
+                createOrderSequence(OrderSequenceCreation("Seq"))
+                createTransportOrder(TransportOrderCreation("S1", longTrip, wrappingSequence = "Seq"))
+                createTransportOrder(TransportOrderCreation("S2", longTrip, wrappingSequence = "Seq"))
+                markSequenceComplete("Seq")
+            }
+            kernel.context.runUntil { kernel.core.sequences.require("Seq").finished }
+            val s1 = kernel.core.orders.require("S1")
+            val s2 = kernel.core.orders.require("S2")
+            s1.state shouldBe TransportOrderState.FINISHED
+            s2.processingVehicle shouldBe s1.processingVehicle
+            (s2.finishedTime!! > s1.finishedTime!!) shouldBe true
+        }
+    }
+
+    test("a locked path is left out of the routes of new orders") {
+        kernel().use { kernel ->
+            val path = "Point-0001 --- Point-0002"
+            kernel.run {
+                plant.setPathLocked(path, true)
+                router.updateTopology(plant.model())
+                createTransportOrder(TransportOrderCreation("T", longTrip))
+            }
+            kernel.context.runUntil { kernel.state("T").isFinal }
+            kernel.state("T") shouldBe TransportOrderState.FINISHED
+            kernel.core.orders.require("T").driveOrders.flatMap { it.route!!.steps }.none { it.path == path } shouldBe
+                true
+        }
+    }
+})
