@@ -1,6 +1,7 @@
 package org.ktcs.e2e
 
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldContainAll
 import io.kotest.matchers.collections.shouldHaveSize
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
@@ -10,6 +11,7 @@ import java.net.http.HttpClient
 import java.net.http.HttpRequest
 import java.net.http.HttpResponse
 import java.nio.file.Files
+import kotlin.time.Duration.Companion.seconds
 
 /** `./ktcs` as the README tells a user to run it. */
 class LauncherTest : FunSpec({
@@ -59,6 +61,29 @@ class LauncherTest : FunSpec({
             ktcs.awaitExit() shouldBe 1
             ktcs.output().trim() shouldBe
                 "ktcs: error: --set web.prot=1: unknown setting 'web.prot' (did you mean 'web.port'?)"
+        }
+    }
+
+    test("simulate runs random orders with loopback vehicles on virtual time and prints its figures") {
+        KtcsProcess("simulate", "--vehicles", "4", "--orders", "20", "--seed", "3", "--virtual-time").use { ktcs ->
+            ktcs.awaitExit(timeout = 120.seconds) shouldBe 0
+            val figures = ktcs.output().lines().filter { ": " in it && !it.startsWith("20") }.associate {
+                it.substringBefore(": ") to
+                    it.substringAfter(": ")
+            }
+            figures["orders_finished"] shouldBe "20"
+            figures["orders_failed"] shouldBe "0"
+            figures["double_allocations"] shouldBe "0"
+            figures.keys shouldContainAll
+                listOf(
+                    "makespan_simulated_s",
+                    "kernel_cpu_s",
+                    "assign_latency_p50_ms",
+                    "assign_latency_p99_ms",
+                    "route_p50_ms",
+                    "route_p99_ms",
+                    "deadlocks_detected",
+                )
         }
     }
 

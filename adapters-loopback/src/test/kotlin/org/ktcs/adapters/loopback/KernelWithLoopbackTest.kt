@@ -2,6 +2,7 @@ package org.ktcs.adapters.loopback
 
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.ints.shouldBeGreaterThanOrEqual
 import io.kotest.matchers.shouldBe
 import org.ktcs.api.event.KernelEvent
 import org.ktcs.api.event.VehicleEvent
@@ -46,6 +47,46 @@ class KernelWithLoopbackTest : FunSpec({
 
             testOrders().groupingBy { it.state }.eachCount() shouldBe mapOf(TransportOrderState.FINISHED to 500)
             violations.shouldBeEmpty()
+        }
+    }
+
+    test("a vehicle whose energy drains while driving is sent to recharge and charges again") {
+        val config = ConfigLoader().load(
+            null,
+            emptyMap(),
+            listOf(
+                "loopback.positionReportInterval=0",
+                "loopback.energyDrainPercentPerKm=300",
+                "loopback.rechargePercentPerSecond=5",
+            ),
+        )
+        SimulationKernel(
+            PlantModelLoader.loadDemo().model,
+            config,
+            listOf(LoopbackExtension().module()),
+        ).use { kernel ->
+            var lowest = 100
+            var highestAfterLow = 0
+            kernel.core.events.listen { event ->
+                val vehicle = (event as? VehicleEvent)?.current?.takeIf { it.name == "Vehicle-01" } ?: return@listen
+                lowest = minOf(lowest, vehicle.energyLevel)
+                if (lowest < 90) highestAfterLow = maxOf(highestAfterLow, vehicle.energyLevel)
+            }
+            val trip =
+                listOf(Destination("Goods in north 01", "Load cargo"), Destination("Goods out 02", "Unload cargo"))
+            kernel.context.execute {
+                kernel.core.createTransportOrder(TransportOrderCreation("Trip", trip, intendedVehicle = "Vehicle-01"))
+            }
+            kernel.context.runUntil { highestAfterLow >= 95 || kernel.context.elapsedMillis() > 3_600_000 }
+
+            kernel.core.orders.require("Trip").state shouldBe TransportOrderState.FINISHED
+            (lowest < 90) shouldBe true
+            val recharge = kernel.core.orders.all().single {
+                it.name.startsWith("Recharge-") &&
+                    it.intendedVehicle == "Vehicle-01"
+            }
+            recharge.driveOrders.single().destination.operation shouldBe "CHARGE"
+            highestAfterLow shouldBeGreaterThanOrEqual 95
         }
     }
 })

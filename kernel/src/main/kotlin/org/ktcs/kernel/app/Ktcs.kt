@@ -18,7 +18,7 @@ import java.nio.file.Path
 
 /** The `ktcs` command: parses the command line, runs one command and returns the process exit code. */
 class Ktcs(private val out: PrintStream, private val err: PrintStream, private val environment: Map<String, String>) {
-    fun run(args: List<String>, awaitShutdown: () -> Unit = ShutdownSignal::await): Int = try {
+    fun run(args: List<String>, awaitShutdown: (() -> Unit)? = null): Int = try {
         when (val command = CommandLine.parse(args)) {
             is Command.Run -> runKernel(command.options, awaitShutdown)
             is Command.ShowConfig -> 0.also { out.println(ConfigFile.describe(config(command.options))) }
@@ -38,13 +38,14 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
         EXIT_FAILURE
     }
 
-    private fun runKernel(options: RunOptions, awaitShutdown: () -> Unit): Int {
+    private fun runKernel(options: RunOptions, awaitShutdown: (() -> Unit)?): Int {
+        val waitForShutdown = awaitShutdown ?: ShutdownSignal.install()::await
         val config = config(options)
         Logging.apply(config)
         val application = KernelApplication(config, PlantModelLoader.load(options.model), Extensions.discover())
         application.start()
         try {
-            awaitShutdown()
+            waitForShutdown()
         } finally {
             application.stop()
         }

@@ -5,12 +5,19 @@ import java.util.concurrent.CountDownLatch
 
 /**
  * Waits for Ctrl-C (SIGINT) or SIGTERM. Handling the signals ourselves, instead of relying on a shutdown hook,
- * lets the kernel stop in order and the process exit with code 0.
+ * lets the kernel stop in order and the process exit with code 0. The handlers are installed before the kernel
+ * starts, so a signal that arrives while it is starting is not lost either.
  */
-object ShutdownSignal {
+class ShutdownSignal private constructor() {
+    private val latch = CountDownLatch(1)
+
     fun await() {
-        val latch = CountDownLatch(1)
-        listOf("INT", "TERM").forEach { name -> Signal.handle(Signal(name)) { latch.countDown() } }
         latch.await()
+    }
+
+    companion object {
+        fun install(): ShutdownSignal = ShutdownSignal().also { signal ->
+            listOf("INT", "TERM").forEach { name -> Signal.handle(Signal(name)) { signal.latch.countDown() } }
+        }
     }
 }

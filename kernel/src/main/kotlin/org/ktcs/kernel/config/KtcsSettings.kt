@@ -183,7 +183,7 @@ object KtcsSettings {
     val loopbackEnergyDrain = doubleSetting(
         "loopback.energyDrainPercentPerKm",
         10.0,
-        0.0..100.0,
+        0.0..10_000.0,
         "Percent of energy a simulated vehicle uses per kilometre driven (openTCS's never drains).",
     )
     val loopbackPositionReportInterval = longSetting(

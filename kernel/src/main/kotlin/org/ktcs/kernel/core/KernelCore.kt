@@ -4,6 +4,7 @@ import org.ktcs.api.dispatching.Dispatcher
 import org.ktcs.api.driver.VehicleDriverFactory
 import org.ktcs.api.error.IllegalStateChangeException
 import org.ktcs.api.event.KernelEvent
+import org.ktcs.api.event.NotificationLevel
 import org.ktcs.api.event.OrderSequenceEvent
 import org.ktcs.api.event.TransportOrderEvent
 import org.ktcs.api.kernel.Cancellable
@@ -58,6 +59,9 @@ class KernelCore(
         VehicleEnvironment(context, events, plant, orders, notifications, { scheduler }, { router }, trigger::request),
         driverFactories,
     )
+
+    /** The dispatcher in use (the default one, or one an extension put in its place). */
+    val dispatcher: Dispatcher get() = dispatcherProvider()
 
     /** The DISPATCHABLE orders, oldest first; kept up to date from order events. */
     val dispatchable = LinkedHashMap<String, TransportOrder>()
@@ -176,6 +180,28 @@ class KernelCore(
         }
         if (disableVehicle) controllers.setIntegrationLevel(vehicle, IntegrationLevel.TO_BE_RESPECTED)
         controllers.controller(vehicle).withdraw(immediate)
+    }
+
+    /**
+     * Locks or unlocks a path and updates the routing topology; vehicles whose remaining route uses a path that
+     * was just locked are routed around it where possible (otherwise they keep their route, as openTCS's
+     * IGNORE_PATH_LOCKS strategy does, and the lock applies to new routes).
+     */
+    fun setPathLocked(path: String, locked: Boolean) {
+        plant.setPathLocked(path, locked)
+        router.updateTopology(plant.model())
+        if (locked) {
+            plant.vehicles().filter { vehicle -> vehicle.claimedResources.any { path in it } }.forEach { vehicle ->
+                if (!controllers.controller(vehicle.name).reroute(emptySet())) {
+                    notifications.publish(
+                        vehicle.name,
+                        NotificationLevel.NOTEWORTHY,
+                        "vehicle ${vehicle.name} has no way around locked path $path and keeps its route",
+                    )
+                }
+            }
+        }
+        trigger.request()
     }
 
     private fun track(event: KernelEvent) {

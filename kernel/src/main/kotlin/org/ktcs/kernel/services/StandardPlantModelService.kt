@@ -8,9 +8,7 @@ class StandardPlantModelService(private val kernel: KernelCore) : PlantModelServ
     override suspend fun plantModel(): PlantModel = kernel.context.call { kernel.plant.model() }
 
     override suspend fun setPathLocked(path: String, locked: Boolean) = kernel.context.call {
-        kernel.plant.setPathLocked(path, locked)
-        kernel.router.updateTopology(kernel.plant.model())
-        kernel.dispatch()
+        kernel.setPathLocked(path, locked)
     }
 
     override suspend fun setLocationLocked(location: String, locked: Boolean) = kernel.context.call {

@@ -1,10 +1,16 @@
 package org.ktcs.kernel.core
 
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldContain
+import io.kotest.matchers.collections.shouldNotContain
 import io.kotest.matchers.shouldBe
 import org.koin.dsl.bind
 import org.koin.dsl.module
 import org.ktcs.api.driver.VehicleDriverFactory
+import org.ktcs.api.model.Path
+import org.ktcs.api.model.PlantModel
+import org.ktcs.api.model.Point
+import org.ktcs.api.model.Vehicle
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.OrderSequenceCreation
 import org.ktcs.api.order.TransportOrderCreation
@@ -142,6 +148,67 @@ class KernelOperationsTest : FunSpec({
             kernel.state("T") shouldBe TransportOrderState.FINISHED
             kernel.core.orders.require("T").driveOrders.flatMap { it.route!!.steps }.none { it.path == path } shouldBe
                 true
+        }
+    }
+
+    test("locking a path on a vehicle's way routes it around the path") {
+        // A long approach A -> W -> X (the vehicle is sent two steps ahead), then a short way X -> B -> D and a
+        // longer one X -> C -> D.
+        val diamond = PlantModel(
+            "diamond",
+            points = listOf("A", "W", "X", "B", "C", "D").map { Point(it) },
+            paths = listOf(
+                Path("A --- W", "A", "W", 10_000),
+                Path("W --- X", "W", "X", 10_000),
+                Path("X --- B", "X", "B", 1_000),
+                Path("B --- D", "B", "D", 1_000),
+                Path("X --- C", "X", "C", 5_000),
+                Path("C --- D", "C", "D", 5_000),
+            ),
+            vehicles = listOf(Vehicle("V", properties = mapOf("loopback:initialPosition" to "A"))),
+        )
+        SimulationKernel(diamond, config, listOf(drivers)).use { kernel ->
+            kernel.run { createTransportOrder(TransportOrderCreation("T", listOf(Destination("D", "MOVE")))) }
+            kernel.runFor(1_000)
+            kernel.core.plant.vehicle("V").claimedResources.flatten() shouldContain "X --- B"
+            kernel.run { setPathLocked("X --- B", true) }
+
+            kernel.core.plant.vehicle("V").claimedResources.flatten() shouldNotContain "X --- B"
+            kernel.context.runUntil { kernel.state("T").isFinal }
+            kernel.state("T") shouldBe TransportOrderState.FINISHED
+            kernel.core.orders.require("T").driveOrders.single().route!!.steps.map { it.path } shouldBe
+                listOf("A --- W", "W --- X", "X --- C", "C --- D")
+        }
+    }
+
+    test("an order whose destinations no path connects is UNROUTABLE at once") {
+        val islands = PlantModel(
+            "islands",
+            points = listOf(Point("A"), Point("B"), Point("C")),
+            paths = listOf(Path("A --- B", "A", "B", 1000, maxReverseVelocity = 1000)),
+            vehicles = listOf(Vehicle("V", properties = mapOf("loopback:initialPosition" to "A"))),
+        )
+        SimulationKernel(islands, config, listOf(drivers)).use { kernel ->
+            kernel.run {
+                createTransportOrder(
+                    TransportOrderCreation("Cut off", listOf(Destination("B", "MOVE"), Destination("C", "MOVE"))),
+                )
+            }
+            kernel.state("Cut off") shouldBe TransportOrderState.UNROUTABLE
+        }
+    }
+
+    test("a paused vehicle gets no further resources until it is resumed") {
+        kernel().use { kernel ->
+            kernel.run { createTransportOrder(TransportOrderCreation("T", longTrip, intendedVehicle = "Vehicle-02")) }
+            kernel.runFor(1_000)
+            kernel.run { controllers.setPaused("Vehicle-02", true) }
+            kernel.runFor(600_000)
+            kernel.state("T") shouldBe TransportOrderState.BEING_PROCESSED
+            kernel.core.plant.vehicle("Vehicle-02").paused shouldBe true
+            kernel.run { controllers.setPaused("Vehicle-02", false) }
+            kernel.context.runUntil { kernel.state("T").isFinal }
+            kernel.state("T") shouldBe TransportOrderState.FINISHED
         }
     }
 })
