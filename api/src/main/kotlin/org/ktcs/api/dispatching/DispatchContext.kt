@@ -21,7 +21,7 @@ public interface DispatchContext {
     /** The router, for costs and routes. */
     public val router: Router
 
-    /** The plant as it is now (locks included). */
+    /** The plant with its current path and location locks; its vehicles are as loaded (use [vehicles]). */
     public fun plantModel(): PlantModel
 
     /** Every vehicle, with its runtime state. */

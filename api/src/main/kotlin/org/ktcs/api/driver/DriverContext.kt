@@ -16,7 +16,7 @@ public interface DriverContext {
     /** The kernel's clock; simulated drivers schedule their work on it so they follow virtual time too. */
     public val clock: KernelClock
 
-    /** The plant model as it is now. */
+    /** The plant with its current locks; its vehicles are as loaded (use [vehicle] for the driver's own). */
     public val plantModel: PlantModel
 
     /** The vehicle as the kernel knows it now. */

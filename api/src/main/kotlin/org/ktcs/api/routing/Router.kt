@@ -46,4 +46,12 @@ public interface Router : KernelComponent {
         resourcesToAvoid: Set<String> = emptySet(),
         maxRoutes: Int = 1,
     ): List<Route>
+
+    /**
+     * The costs of the cheapest routes from [sourcePoint] for [vehicle], as a function of the destination point
+     * (`null`: unreachable). A router should answer all destinations from one search, e.g. to find the closest of
+     * many parking positions; this default asks [routes] once per destination.
+     */
+    public fun costsFrom(vehicle: Vehicle, sourcePoint: String): (String) -> Long? =
+        { destination -> routes(vehicle, sourcePoint, destination).firstOrNull()?.costs }
 }

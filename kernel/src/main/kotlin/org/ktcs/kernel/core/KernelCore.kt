@@ -76,7 +76,7 @@ class KernelCore(
     /** Starts the strategies, the vehicles and the periodic tasks; call in the kernel context. */
     fun start() {
         router.initialize()
-        router.updateTopology(plant.model())
+        router.updateTopology(plant.topology())
         scheduler.initialize()
         dispatcherProvider().initialize()
         controllers.start(options.enableDriversOnStart, options.initialIntegrationLevel)
@@ -102,7 +102,7 @@ class KernelCore(
         orders.contains(name) || sequences.get(name) != null || plant.staticModel().objectNamed(name) != null
 
     fun createTransportOrder(creation: TransportOrderCreation): TransportOrder {
-        val order = factory.create(creation, plant.model(), ::nameTaken, orders::contains, sequences::get)
+        val order = factory.create(creation, plant.topology(), ::nameTaken, orders::contains, sequences::get)
         orders.add(order)
         return orders.require(order.name)
     }
@@ -189,7 +189,7 @@ class KernelCore(
      */
     fun setPathLocked(path: String, locked: Boolean) {
         plant.setPathLocked(path, locked)
-        router.updateTopology(plant.model())
+        router.updateTopology(plant.topology())
         if (locked) {
             plant.vehicles().filter { vehicle -> vehicle.claimedResources.any { path in it } }.forEach { vehicle ->
                 if (!controllers.controller(vehicle.name).reroute(emptySet())) {

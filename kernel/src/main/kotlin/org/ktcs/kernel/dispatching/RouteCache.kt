@@ -13,6 +13,7 @@ internal class RouteCache(private val router: Router) {
     private data class Key(val vehicle: String, val source: String, val target: String)
 
     private val orderRoutes = HashMap<Key, List<DriveOrder>?>()
+    private val costTrees = HashMap<Pair<String, String>, (String) -> Long?>()
     private val pointCosts = HashMap<Key, Long?>()
 
     /** [order]'s drive orders routed from [vehicle]'s position, or `null` if it has none or there is no route. */
@@ -25,7 +26,7 @@ internal class RouteCache(private val router: Router) {
     fun costs(vehicle: Vehicle, point: String): Long? {
         val position = vehicle.currentPosition ?: return null
         return pointCosts.memo(Key(vehicle.name, position, point)) {
-            router.routes(vehicle, position, point).firstOrNull()?.costs
+            costTrees.getOrPut(vehicle.name to position) { router.costsFrom(vehicle, position) }(point)
         }
     }
 

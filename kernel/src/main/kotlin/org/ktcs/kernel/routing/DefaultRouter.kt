@@ -49,6 +49,9 @@ class DefaultRouter(private val configuration: RouterConfiguration = RouterConfi
         return searchFor(vehicle, sourcePoint, resourcesToAvoid).cheapest(sourcePoint, destinationPoint, count)
     }
 
+    override fun costsFrom(vehicle: Vehicle, sourcePoint: String): (String) -> Long? =
+        searchFor(vehicle, sourcePoint, emptySet()).costsFrom(sourcePoint)
+
     private fun searchFor(vehicle: Vehicle, sourcePoint: String, avoided: Collection<String>): RouteSearch {
         val search = graphs.searchFor(configuration.graphKeyOf(vehicle))
         return search.avoiding(AvoidedResources.of(graphs.model, avoided, sourcePoint))

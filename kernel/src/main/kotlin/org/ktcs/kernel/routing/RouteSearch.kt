@@ -41,6 +41,19 @@ internal class RouteSearch(private val graph: RoutingGraph, private val algorith
         return paths.associate { it.endVertex to it.toRoute() }
     }
 
+    /** The cheapest costs from [source] to any point, from one single-source search made on first use. */
+    fun costsFrom(source: String): (String) -> Long? {
+        if (!graph.containsVertex(source)) return { null }
+        val tree by lazy { shortestPaths.getPaths(source) }
+        return { target ->
+            when {
+                target == source -> 0L
+                !graph.containsVertex(target) -> null
+                else -> tree.getWeight(target).takeIf { it.isFinite() }?.toLong()
+            }
+        }
+    }
+
     /** Up to [count] cheapest loop-free routes from [source] to [target], cheapest first. */
     fun cheapest(source: String, target: String, count: Int): List<Route> = when {
         !graph.containsVertex(source) || !graph.containsVertex(target) -> emptyList()

@@ -17,6 +17,6 @@ class StandardPlantModelService(private val kernel: KernelCore) : PlantModelServ
     }
 
     override suspend fun updateRoutingTopology() = kernel.context.call {
-        kernel.router.updateTopology(kernel.plant.model())
+        kernel.router.updateTopology(kernel.plant.topology())
     }
 }

@@ -6,7 +6,6 @@ import org.ktcs.api.event.TransportOrderEvent
 import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.ProcState
-import org.ktcs.api.model.VehicleState
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
@@ -129,31 +128,38 @@ class SimulationRunner(
 }
 
 /**
- * How long orders wait between becoming DISPATCHABLE and being assigned, counting only orders that became
- * dispatchable while some vehicle was idle and ready for work: the dispatcher's own latency, not the fleet's.
+ * How long orders wait between becoming DISPATCHABLE and being assigned, counting only orders that went to a vehicle
+ * which was already idle when the order became dispatchable: the dispatcher's own latency, not the fleet's (an order
+ * that waits for a busy or recharging vehicle is not the dispatcher's delay).
  */
 private class AssignLatencies(private val kernel: SimulationKernel) {
-    private val since = HashMap<String, Long>()
+    private class Waiting(val sinceMillis: Long, val idleVehicles: Set<String>)
+
+    private val waiting = HashMap<String, Waiting>()
     val millis = ArrayList<Double>()
 
     fun onEvent(event: KernelEvent) {
         if (event !is TransportOrderEvent) return
         val order = event.current ?: return
         val before = event.previous?.state
-        if (order.state == TransportOrderState.DISPATCHABLE && before != TransportOrderState.DISPATCHABLE &&
-            someVehicleIdle()
-        ) {
-            since[order.name] = kernel.context.elapsedMillis()
+        if (order.state == TransportOrderState.DISPATCHABLE && before != TransportOrderState.DISPATCHABLE) {
+            waiting[order.name] = Waiting(kernel.context.elapsedMillis(), idleVehicles())
         }
         if (order.state == TransportOrderState.BEING_PROCESSED && before == TransportOrderState.DISPATCHABLE) {
-            since.remove(order.name)?.let { millis += (kernel.context.elapsedMillis() - it).toDouble() }
+            val wait = waiting.remove(order.name) ?: return
+            if (order.processingVehicle in
+                wait.idleVehicles
+            ) {
+                millis += (kernel.context.elapsedMillis() - wait.sinceMillis).toDouble()
+            }
         }
+        if (order.state.isFinal) waiting.remove(order.name)
     }
 
-    // Ready as the dispatcher sees it: idle, utilised, not paused, not charging, energy above critical.
-    private fun someVehicleIdle() = kernel.core.plant.vehicles().any {
-        it.integrationLevel == IntegrationLevel.TO_BE_UTILIZED && it.procState == ProcState.IDLE &&
-            it.transportOrder == null &&
-            it.state == VehicleState.IDLE && !it.paused && it.energyLevel > it.energyLevelThresholdSet.critical
-    }
+    private fun idleVehicles(): Set<String> = kernel.core.plant.vehicles()
+        .filter {
+            it.integrationLevel == IntegrationLevel.TO_BE_UTILIZED && it.procState == ProcState.IDLE &&
+                it.transportOrder == null
+        }
+        .mapTo(HashSet()) { it.name }
 }

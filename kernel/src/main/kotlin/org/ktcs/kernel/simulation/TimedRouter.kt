@@ -25,6 +25,11 @@ class TimedRouter(private val router: Router) : Router by router {
     ): List<Route> =
         timed { router.routes(vehicle, sourcePoint, destinationPoint, resourcesToAvoid, maxRoutes) }
 
+    override fun costsFrom(vehicle: Vehicle, sourcePoint: String): (String) -> Long? {
+        val costs = router.costsFrom(vehicle, sourcePoint)
+        return { destination -> timed { costs(destination) } }
+    }
+
     private inline fun <T> timed(block: () -> T): T {
         val start = System.nanoTime()
         try {

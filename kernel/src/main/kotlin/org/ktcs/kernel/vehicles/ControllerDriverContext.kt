@@ -24,7 +24,7 @@ class ControllerDriverContext(
 
     override val clock: KernelClock get() = env.context
 
-    override val plantModel: PlantModel get() = env.plant.model()
+    override val plantModel: PlantModel get() = env.plant.topology()
 
     override fun vehicle(): Vehicle = env.plant.vehicle(vehicleName)
 

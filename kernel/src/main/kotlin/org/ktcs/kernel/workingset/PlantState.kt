@@ -22,6 +22,7 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
     private val locations = LinkedHashMap<String, Location>()
     private val vehicles = LinkedHashMap<String, Vehicle>()
     private var snapshot: PlantModel? = null
+    private var topologySnapshot: PlantModel? = null
 
     init {
         load(initial)
@@ -33,6 +34,15 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
         locations = locations.values.toList(),
         vehicles = vehicles.values.toList(),
     ).also { snapshot = it }
+
+    /**
+     * The plant with the current path and location locks, but vehicles as loaded. Unlike [model] it changes only
+     * when a lock does, so strategies and drivers can read it on every event without copying the plant each time.
+     */
+    fun topology(): PlantModel = topologySnapshot ?: base.copy(
+        paths = paths.values.toList(),
+        locations = locations.values.toList(),
+    ).also { topologySnapshot = it }
 
     /** The model as loaded, without runtime changes: points, location types and blocks never change at runtime. */
     fun staticModel(): PlantModel = base
@@ -64,6 +74,7 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
         return previous.copy(locked = locked).also {
             paths[name] = it
             snapshot = null
+            topologySnapshot = null
             events.publish(PathEvent(previous, it))
         }
     }
@@ -74,6 +85,7 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
         return previous.copy(locked = locked).also {
             locations[name] = it
             snapshot = null
+            topologySnapshot = null
             events.publish(LocationEvent(previous, it))
         }
     }
@@ -93,5 +105,6 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
         model.locations.associateByTo(locations) { it.name }
         model.vehicles.associateByTo(vehicles) { it.name }
         snapshot = model
+        topologySnapshot = model
     }
 }
