@@ -12,4 +12,9 @@ object Logging {
         val logger = LoggerFactory.getLogger("org.ktcs") as? Logger ?: return
         logger.level = Level.toLevel(config[KtcsSettings.logLevel].name)
     }
+
+    /** A simulation reports deadlocks in its figures; one log line each would bury them. */
+    fun quietNotifications() {
+        (LoggerFactory.getLogger("org.ktcs.kernel.notifications") as? Logger)?.level = Level.ERROR
+    }
 }
