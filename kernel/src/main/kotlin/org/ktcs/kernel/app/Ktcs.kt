@@ -61,6 +61,7 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
             ),
         )
         Logging.apply(config)
+        Logging.quietNotifications()
         val plant =
             options.grid?.let { (width, height) -> GridPlant(width, height).build() }
                 ?: PlantModelLoader.load(options.run.model).model

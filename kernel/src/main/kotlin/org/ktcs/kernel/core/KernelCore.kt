@@ -3,6 +3,7 @@ package org.ktcs.kernel.core
 import org.ktcs.api.dispatching.Dispatcher
 import org.ktcs.api.driver.VehicleDriverFactory
 import org.ktcs.api.error.IllegalStateChangeException
+import org.ktcs.api.error.ObjectExistsException
 import org.ktcs.api.event.KernelEvent
 import org.ktcs.api.event.NotificationLevel
 import org.ktcs.api.event.OrderSequenceEvent
@@ -108,8 +109,8 @@ class KernelCore(
     }
 
     fun createOrderSequence(creation: OrderSequenceCreation): OrderSequence {
-        val name = if (creation.incompleteName) ObjectNames(context).complete(creation.name) else creation.name
-        if (nameTaken(name)) throw org.ktcs.api.error.ObjectExistsException("an object named '$name' exists already")
+        val name = if (creation.incompleteName) names.complete(creation.name) else creation.name
+        if (nameTaken(name)) throw ObjectExistsException("an object named '$name' exists already")
         creation.intendedVehicle?.let { plant.vehicle(it) }
         return sequences.add(
             OrderSequence(
