@@ -39,14 +39,22 @@ fun kernelModule(config: KtcsConfig, model: PlantModel, context: KernelContext):
     single<Dispatcher> { DefaultDispatcher(get(), get<KernelCore>().dispatchContext, get()) }
     single {
         val factories = getAll<VehicleDriverFactory>() + ServiceLoader.load(VehicleDriverFactory::class.java).toList()
-        KernelCore(get(), get(), get(), get(), {
-            get<Dispatcher>()
-        }, factories.distinctBy { it.name }, kernelOptions(config))
+        KernelCore(
+            context = get(),
+            model = get(),
+            router = get(),
+            scheduler = get(),
+            dispatcherProvider = { get<Dispatcher>() },
+            recoveryEvaluator = get(),
+            driverFactories = factories.distinctBy { it.name },
+            options = kernelOptions(config),
+        )
     }
     single<KernelServices> { StandardKernelServices(get()) }
 }
 
 fun kernelOptions(config: KtcsConfig) = KernelOptions(
+    resourceManagement = config[KtcsSettings.kernelResourceManagement],
     enableDriversOnStart = config[KtcsSettings.kernelEnableDrivers],
     initialIntegrationLevel = config[KtcsSettings.kernelInitialIntegrationLevel],
     redispatchIntervalMillis = config[KtcsSettings.dispatcherRedispatchInterval],

@@ -6,6 +6,7 @@ import org.ktcs.kernel.dispatching.OrderPriority
 import org.ktcs.kernel.dispatching.VehiclePriority
 import org.ktcs.kernel.routing.EdgeEvaluator
 import org.ktcs.kernel.routing.RoutingAlgorithm
+import org.ktcs.kernel.vehicles.ResourceManagement
 
 /** Every setting kTCS knows. A key that is not listed here is rejected wherever it appears. */
 object KtcsSettings {
@@ -57,6 +58,11 @@ object KtcsSettings {
         0L..3_600_000L,
         "Milliseconds between checks for vehicles waiting for each other in a cycle; a deadlock is reported and " +
             "broken by rerouting (0: off).",
+    )
+    val kernelResourceManagement = enumSetting(
+        "kernel.vehicleResourceManagement",
+        ResourceManagement.LENGTH_RESPECTED,
+        "What vehicles keep behind them: LENGTH_RESPECTED (the paths their length still covers) or LENGTH_IGNORED (only the point they stand on).",
     )
     val orderPoolSweepInterval =
         longSetting(
@@ -202,6 +208,7 @@ object KtcsSettings {
         kernelEnableDrivers,
         kernelInitialIntegrationLevel,
         kernelDeadlockCheckInterval,
+        kernelResourceManagement,
         orderPoolSweepInterval,
         orderPoolSweepAge,
         routerAlgorithm,

@@ -1,6 +1,7 @@
 package org.ktcs.kernel.core
 
 import org.ktcs.api.dispatching.Dispatcher
+import org.ktcs.api.dispatching.RecoveryEvaluator
 import org.ktcs.api.driver.VehicleDriverFactory
 import org.ktcs.api.error.IllegalStateChangeException
 import org.ktcs.api.error.ObjectExistsException
@@ -43,6 +44,7 @@ class KernelCore(
     val router: Router,
     val scheduler: Scheduler,
     private val dispatcherProvider: () -> Dispatcher,
+    private val recoveryEvaluator: RecoveryEvaluator,
     driverFactories: List<VehicleDriverFactory>,
     val options: KernelOptions = KernelOptions(),
 ) {
@@ -57,7 +59,9 @@ class KernelCore(
     private val trigger = DispatchTrigger(context, dispatcherProvider, options.redispatchIntervalMillis)
     val dispatchContext = KernelDispatchContext(this)
     val controllers = VehicleControllers(
-        VehicleEnvironment(context, events, plant, orders, notifications, { scheduler }, { router }, trigger::request),
+        VehicleEnvironment(context, events, plant, orders, notifications, {
+            scheduler
+        }, { router }, trigger::request, options.resourceManagement),
         driverFactories,
     )
 
@@ -79,6 +83,7 @@ class KernelCore(
         router.initialize()
         router.updateTopology(plant.topology())
         scheduler.initialize()
+        recoveryEvaluator.initialize()
         dispatcherProvider().initialize()
         controllers.start(options.enableDriversOnStart, options.initialIntegrationLevel)
         trigger.start()
@@ -93,6 +98,7 @@ class KernelCore(
         trigger.stop()
         controllers.stop()
         dispatcherProvider().terminate()
+        recoveryEvaluator.terminate()
         scheduler.terminate()
         router.terminate()
     }

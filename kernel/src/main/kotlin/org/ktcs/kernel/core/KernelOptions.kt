@@ -1,9 +1,12 @@
 package org.ktcs.kernel.core
 
 import org.ktcs.api.model.IntegrationLevel
+import org.ktcs.kernel.vehicles.ResourceManagement
 
 /** The kernel's own settings, as plain values (mapped from the configuration in the Koin module). */
 data class KernelOptions(
+    /** What a vehicle keeps behind it (openTCS: kernelapp.vehicleResourceManagementType). */
+    val resourceManagement: ResourceManagement = ResourceManagement.LENGTH_RESPECTED,
     /** Enable every vehicle's driver at start-up (openTCS: kernelapp.autoEnableDriversOnStartup). */
     val enableDriversOnStart: Boolean = true,
     /** The integration level vehicles start with; TO_BE_UTILIZED lets them take orders at once. */

@@ -25,18 +25,45 @@ class HeldResources {
 
     /**
      * The vehicle drove the command that was granted [driven] and now stands on [position]: returns what lies
-     * behind it and is no longer needed, and keeps [position] plus everything granted for later commands.
+     * behind it and is no longer needed, and keeps [position], everything granted for later commands and, behind the
+     * vehicle, as many of the sets it passed as its [coverLength] still needs ([coverLength] tells how far back a
+     * set's paths reach, 0 for none: the vehicle's length then decides, as openTCS's LENGTH_RESPECTED does).
      */
-    fun passed(driven: Set<String>, position: String): Set<String> {
+    fun passed(
+        driven: Set<String>,
+        position: String,
+        coverLength: (Set<String>) -> Long = { 0 },
+        vehicleLength: Long = 0,
+    ): Set<String> {
         val index = sets.indexOf(driven)
         if (index < 0) return emptySet()
-        val behind = (0..index).flatMapTo(HashSet()) { sets[it] }
+        val passed = (0..index).map { sets[it] }
+        val kept = keptBehind(passed, coverLength, vehicleLength)
         val ahead = sets.drop(index + 1)
-        val stillNeeded = ahead.flatMapTo(hashSetOf(position)) { it }
+        val stillNeeded = (kept + ahead).flatMapTo(hashSetOf(position)) { it }
         sets.clear()
         sets.addLast(setOf(position))
+        kept.forEach(sets::addLast)
         ahead.forEach(sets::addLast)
-        return behind - stillNeeded
+        return passed.flatMapTo(HashSet()) { it } - stillNeeded
+    }
+
+    // Newest first, keep passed sets until their paths cover the vehicle's length.
+    private fun keptBehind(
+        passed: List<Set<String>>,
+        coverLength: (Set<String>) -> Long,
+        vehicleLength: Long,
+    ): List<Set<String>> {
+        var covered = 0L
+        val kept = ArrayDeque<Set<String>>()
+        for (set in passed.asReversed()) {
+            if (covered >= vehicleLength) break
+            val length = coverLength(set)
+            if (length <= 0) continue
+            kept.addFirst(set)
+            covered += length
+        }
+        return kept.toList()
     }
 
     /** Gives up everything except [keep]; returns what was given up. */

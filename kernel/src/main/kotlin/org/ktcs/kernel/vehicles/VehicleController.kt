@@ -115,7 +115,10 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
             return
         }
         sent.removeFirst()
-        env.scheduler().free(this, held.passed(done.resources, command.step.destinationPoint))
+        env.scheduler().free(
+            this,
+            held.passed(done.resources, command.step.destinationPoint, ::pathLength, lengthToCover()),
+        )
         env.orders.update(command.transportOrder) { it.copy(currentRouteStepIndex = command.step.routeIndex) }
         publishResources()
         when {
@@ -224,6 +227,16 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
             held.reset(wanted)
         }
         publishResources()
+    }
+
+    private fun pathLength(resources: Set<String>): Long = resources.sumOf {
+        env.plant.staticModel().path(it)?.length
+            ?: 0L
+    }
+
+    private fun lengthToCover(): Long = when (env.resourceManagement) {
+        ResourceManagement.LENGTH_RESPECTED -> env.plant.vehicle(name).boundingBox.length
+        ResourceManagement.LENGTH_IGNORED -> 0
     }
 
     private fun releaseAllButPosition() {

@@ -19,4 +19,14 @@ class VehicleEnvironment(
     val router: () -> Router,
     /** Called when a vehicle may have become free for work, so the dispatcher runs. */
     val vehicleMayBeAvailable: () -> Unit,
+    val resourceManagement: ResourceManagement = ResourceManagement.LENGTH_RESPECTED,
 )
+
+/** How resources behind a vehicle are given back (openTCS: kernelapp.vehicleResourceManagementType). */
+enum class ResourceManagement {
+    /** Keep the paths behind the vehicle that its length still covers (openTCS's classic behaviour). */
+    LENGTH_RESPECTED,
+
+    /** Give back everything behind the point the vehicle stands on. */
+    LENGTH_IGNORED,
+}

@@ -35,9 +35,13 @@ class StandardKernelServicesTest : FunSpec({
         listOf(drivers),
     )
 
-    /** Calls the services from another thread while this one runs the kernel on virtual time. */
+    /**
+     * Calls the services as a client outside the kernel context would, then runs the kernel until the answer is
+     * there. Unconfined: the caller resumes inside the kernel task that answers it, so virtual time cannot run ahead
+     * while a second thread catches up.
+     */
     fun <T> SimulationKernel.serve(block: suspend KernelServices.() -> T): T {
-        val result = CoroutineScope(Dispatchers.Default).async { services.block() }
+        val result = CoroutineScope(Dispatchers.Unconfined).async { services.block() }
         context.runUntil { result.isCompleted }
         return runBlocking { result.await() }
     }
