@@ -1,0 +1,73 @@
+package org.ktcs.kernel.web.v1.events
+
+import kotlinx.serialization.Serializable
+import org.ktcs.api.order.DriveOrder
+import org.ktcs.api.order.TransportOrder
+import org.ktcs.kernel.web.v1.ObjectHistoryDto
+import org.ktcs.kernel.web.v1.orders.RouteDto
+import org.ktcs.kernel.web.v1.orders.orMaxInstant
+import org.ktcs.kernel.web.v1.orders.toDto
+import org.ktcs.kernel.web.v1.toDto
+import org.ktcs.kernel.web.v1.toWire
+
+/** A transport order in an SSE event. Here v1 writes properties as a JSON object and lists no destination states. */
+@Serializable
+data class SseTransportOrderDto(
+    val name: String,
+    val properties: Map<String, String>,
+    val history: ObjectHistoryDto,
+    val type: String,
+    val dependencies: List<String>,
+    val driveOrders: List<SseDriveOrderDto>,
+    val peripheralReservationToken: String?,
+    val currentDriveOrderIndex: Int,
+    val currentRouteStepIndex: Int,
+    val state: String,
+    val creationTime: String,
+    val deadline: String,
+    val finishedTime: String,
+    val intendedVehicle: String?,
+    val processingVehicle: String?,
+    val wrappingSequence: String?,
+    val dispensable: Boolean,
+)
+
+@Serializable
+data class SseDriveOrderDto(
+    val name: String,
+    val destination: SseDestinationDto,
+    val transportOrder: String,
+    val route: RouteDto?,
+    val state: String,
+)
+
+@Serializable
+data class SseDestinationDto(val destination: String, val operation: String, val properties: Map<String, String>)
+
+fun TransportOrder.toSseDto(): SseTransportOrderDto = SseTransportOrderDto(
+    name = name,
+    properties = properties,
+    history = history.toDto(),
+    type = type,
+    dependencies = dependencies.toList(),
+    driveOrders = driveOrders.map { it.toSseDto(name) },
+    peripheralReservationToken = peripheralReservationToken,
+    currentDriveOrderIndex = currentDriveOrderIndex,
+    currentRouteStepIndex = currentRouteStepIndex,
+    state = state.name,
+    creationTime = creationTime.toWire(),
+    deadline = deadline.toWire(),
+    finishedTime = finishedTime.orMaxInstant(),
+    intendedVehicle = intendedVehicle,
+    processingVehicle = processingVehicle,
+    wrappingSequence = wrappingSequence,
+    dispensable = dispensable,
+)
+
+private fun DriveOrder.toSseDto(order: String) = SseDriveOrderDto(
+    name = name,
+    destination = SseDestinationDto(destination.target, destination.operation, destination.properties),
+    transportOrder = order,
+    route = route?.toDto(),
+    state = state.name,
+)
