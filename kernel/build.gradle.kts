@@ -19,6 +19,7 @@ dependencies {
     api(libs.ktor.server.cio)
     api(libs.ktor.server.content.negotiation)
     api(libs.ktor.serialization.kotlinx.json)
+    api(libs.ktor.server.status.pages)
     api(libs.jgrapht.core)
     api(libs.jackson.dataformat.xml)
     api(libs.jackson.module.kotlin)

@@ -62,7 +62,7 @@ class KernelApplication(
 
     private fun applicationModule() = module {
         single { KernelVersion.ofThisBuild() }
-        single { WebServer(get(), get()) }
+        single { WebServer(get(), get(), get()) }
     }
 
     private fun moduleOf(extension: KtcsExtension) = try {

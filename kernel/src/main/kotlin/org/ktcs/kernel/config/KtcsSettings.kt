@@ -25,6 +25,12 @@ object KtcsSettings {
             0..MAX_PORT,
             "TCP port of the web API and the browser overview (0: any free port).",
         )
+    val webAccessKey = Setting(
+        "web.accessKey",
+        "",
+        "Key a web API client must send in the X-Api-Access-Key header (empty: no key needed).",
+        { it },
+    )
     val xmlOrdersPort =
         intSetting("xml.orders.port", 55555, 0..MAX_PORT, "TCP port of the XML order channel (0: any free port).")
     val xmlStatusPort =
@@ -202,6 +208,7 @@ object KtcsSettings {
     val all: List<Setting<*>> = listOf(
         webBindAddress,
         webPort,
+        webAccessKey,
         xmlOrdersPort,
         xmlStatusPort,
         logLevel,

@@ -1,5 +1,6 @@
 package org.ktcs.kernel.web
 
+import io.ktor.http.HttpStatusCode
 import io.ktor.serialization.kotlinx.json.json
 import io.ktor.server.application.Application
 import io.ktor.server.application.install
@@ -7,21 +8,37 @@ import io.ktor.server.cio.CIO
 import io.ktor.server.engine.EmbeddedServer
 import io.ktor.server.engine.embeddedServer
 import io.ktor.server.plugins.contentnegotiation.ContentNegotiation
+import io.ktor.server.response.respond
+import io.ktor.server.routing.post
 import io.ktor.server.routing.route
 import io.ktor.server.routing.routing
 import kotlinx.coroutines.runBlocking
-import kotlinx.serialization.json.Json
+import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.config.KtcsConfig
 import org.ktcs.kernel.config.KtcsSettings
+import org.ktcs.kernel.web.plugins.AccessKey
+import org.ktcs.kernel.web.plugins.installErrorResponses
+import org.ktcs.kernel.web.v1.V1Json
+import org.ktcs.kernel.web.v1.orders.orderSequenceRoutes
+import org.ktcs.kernel.web.v1.orders.transportOrderRoutes
+import org.ktcs.kernel.web.v1.plantmodel.plantModelRoutes
+import org.ktcs.kernel.web.v1.vehicles.vehicleRoutes
 
 /** The HTTP server of the kernel application (Ktor, CIO engine). */
-class WebServer(private val config: KtcsConfig, private val version: KernelVersion) {
+class WebServer(
+    private val config: KtcsConfig,
+    private val version: KernelVersion,
+    private val services: KernelServices,
+) {
     private var server: EmbeddedServer<*, *>? = null
 
     /** Starts listening and returns the base URL it serves, with the port actually bound. */
     fun start(): String {
         val host = config[KtcsSettings.webBindAddress]
-        val started = embeddedServer(CIO, port = config[KtcsSettings.webPort], host = host) { webModule(version) }
+        val accessKey = config[KtcsSettings.webAccessKey]
+        val started = embeddedServer(CIO, port = config[KtcsSettings.webPort], host = host) {
+            webModule(version, services, accessKey)
+        }
             .start(wait = false)
         server = started
         val port = runBlocking { started.engine.resolvedConnectors().first().port }
@@ -35,9 +52,21 @@ class WebServer(private val config: KtcsConfig, private val version: KernelVersi
 }
 
 /** Installs the plugins and mounts the routes; also used by tests with Ktor's test host. */
-fun Application.webModule(version: KernelVersion) {
-    install(ContentNegotiation) { json(Json { encodeDefaults = true }) }
+fun Application.webModule(version: KernelVersion, services: KernelServices, accessKey: String = "") {
+    install(ContentNegotiation) { json(V1Json.json) }
+    installErrorResponses()
     routing {
-        route("/v1") { kernelRoutes(version) }
+        route("/v1") {
+            install(AccessKey) { key = accessKey }
+            kernelRoutes(version)
+            transportOrderRoutes(services)
+            orderSequenceRoutes(services)
+            vehicleRoutes(services)
+            plantModelRoutes(services)
+            post("/dispatcher/trigger") {
+                services.dispatcher.dispatch()
+                call.respond(HttpStatusCode.OK)
+            }
+        }
     }
 }

@@ -1,0 +1,23 @@
+package org.ktcs.kernel.web.v1
+
+import io.ktor.server.application.ApplicationCall
+import io.ktor.server.request.receiveText
+import org.ktcs.api.error.InvalidRequestException
+
+/** The path parameter [name]; routes only match when it is there. */
+fun ApplicationCall.pathName(name: String = "NAME"): String =
+    parameters[name] ?: throw InvalidRequestException("$name is missing")
+
+/** The boolean query parameter [name], [default] when absent; anything but true/false is refused. */
+fun ApplicationCall.booleanQuery(name: String, default: Boolean = false): Boolean {
+    val raw = request.queryParameters[name] ?: return default
+    return raw.lowercase().toBooleanStrictOrNull()
+        ?: throw InvalidRequestException("query parameter $name must be true or false, was '$raw'")
+}
+
+/** The required query parameter [name]. */
+fun ApplicationCall.requiredQuery(name: String): String =
+    request.queryParameters[name] ?: throw InvalidRequestException("query parameter $name is missing")
+
+/** The request body decoded as [T], with malformed JSON refused as bad input. */
+suspend inline fun <reified T> ApplicationCall.receiveJson(): T = V1Json.decodeRequest(receiveText())

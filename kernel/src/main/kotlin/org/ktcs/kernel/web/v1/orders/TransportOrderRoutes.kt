@@ -1,0 +1,87 @@
+package org.ktcs.kernel.web.v1.orders
+
+import io.ktor.http.HttpStatusCode
+import io.ktor.server.response.respond
+import io.ktor.server.routing.Route
+import io.ktor.server.routing.get
+import io.ktor.server.routing.post
+import io.ktor.server.routing.put
+import io.ktor.server.routing.route
+import org.ktcs.api.error.ObjectUnknownException
+import org.ktcs.api.service.KernelServices
+import org.ktcs.kernel.web.v1.booleanQuery
+import org.ktcs.kernel.web.v1.pathName
+import org.ktcs.kernel.web.v1.receiveJson
+
+/** `/transportOrders`: list, read, create, withdraw, assign now, change the intended vehicle. */
+fun Route.transportOrderRoutes(services: KernelServices) = route("/transportOrders") {
+    get {
+        val vehicle = call.request.queryParameters["intendedVehicle"]
+        vehicle?.let { services.vehicles.vehicle(it) ?: throw ObjectUnknownException("unknown vehicle '$it'") }
+        call.respond(services.transportOrders.transportOrders(vehicle).map { it.toDto() })
+    }
+    post("/dispatcher/trigger") {
+        services.dispatcher.dispatch()
+        call.respond(HttpStatusCode.OK)
+    }
+    route("/{NAME}") {
+        get {
+            val name = call.pathName()
+            val order =
+                services.transportOrders.transportOrder(name)
+                    ?: throw ObjectUnknownException("unknown transport order '$name'")
+            call.respond(order.toDto())
+        }
+        post {
+            val request = call.receiveJson<PostTransportOrderRequest>()
+            call.respond(services.transportOrders.createTransportOrder(request.toDomain(call.pathName())).toDto())
+        }
+        post("/withdrawal") {
+            services.dispatcher.withdrawByTransportOrder(
+                call.pathName(),
+                call.booleanQuery("immediate"),
+                call.booleanQuery("disableVehicle"),
+            )
+            call.respond(HttpStatusCode.OK)
+        }
+        post("/immediateAssignment") {
+            services.dispatcher.assignNow(call.pathName())
+            call.respond(HttpStatusCode.OK)
+        }
+        put("/intendedVehicle") {
+            services.transportOrders.setIntendedVehicle(
+                call.pathName(),
+                call.request.queryParameters["vehicle"]?.ifEmpty {
+                    null
+                },
+            )
+            call.respond(HttpStatusCode.OK)
+        }
+    }
+}
+
+/** `/orderSequences`: list, read, create, mark complete. */
+fun Route.orderSequenceRoutes(services: KernelServices) = route("/orderSequences") {
+    get {
+        val vehicle = call.request.queryParameters["intendedVehicle"]
+        vehicle?.let { services.vehicles.vehicle(it) ?: throw ObjectUnknownException("unknown vehicle '$it'") }
+        call.respond(services.transportOrders.orderSequences(vehicle).map { it.toDto() })
+    }
+    route("/{NAME}") {
+        get {
+            val name = call.pathName()
+            val sequence =
+                services.transportOrders.orderSequence(name)
+                    ?: throw ObjectUnknownException("unknown order sequence '$name'")
+            call.respond(sequence.toDto())
+        }
+        post {
+            val request = call.receiveJson<PostOrderSequenceRequest>()
+            call.respond(services.transportOrders.createOrderSequence(request.toDomain(call.pathName())).toDto())
+        }
+        put("/complete") {
+            services.transportOrders.markOrderSequenceComplete(call.pathName())
+            call.respond(HttpStatusCode.OK)
+        }
+    }
+}

@@ -1,0 +1,133 @@
+package org.ktcs.kernel.web
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
+import io.kotest.matchers.string.shouldStartWith
+import kotlinx.serialization.json.Json
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.jsonArray
+import kotlinx.serialization.json.jsonObject
+import kotlinx.serialization.json.jsonPrimitive
+import org.koin.core.module.Module
+import org.koin.dsl.bind
+import org.koin.dsl.module
+import org.ktcs.api.driver.VehicleDriverFactory
+import org.ktcs.kernel.app.KernelApplication
+import org.ktcs.kernel.app.PlantModelLoader
+import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.core.StepDriverFactory
+import org.ktcs.kernel.extension.KtcsExtension
+import java.net.URI
+import java.net.http.HttpClient
+import java.net.http.HttpRequest
+import java.net.http.HttpResponse
+
+/** The web API v1 of a running kernel, over real HTTP: happy paths, bad input, 404, 409, the access key. */
+class WebApiTest : FunSpec({
+    val testVehicles = object : KtcsExtension {
+        override val name = "step-vehicles"
+
+        override fun module(): Module = module { single { StepDriverFactory() } bind VehicleDriverFactory::class }
+    }
+    val http = HttpClient.newHttpClient()
+
+    fun start(vararg settings: String): Pair<KernelApplication, String> {
+        val config = ConfigLoader().load(null, emptyMap(), listOf("web.bindAddress=127.0.0.1", "web.port=0") + settings)
+        val application = KernelApplication(config, PlantModelLoader.loadDemo(), listOf(testVehicles))
+        val base = Regex("web API (http://\\S+/v1)").find(application.start())!!.groupValues[1]
+        return application to base
+    }
+
+    fun call(method: String, url: String, body: String? = null, key: String? = null): HttpResponse<String> {
+        val publisher = body?.let(HttpRequest.BodyPublishers::ofString) ?: HttpRequest.BodyPublishers.noBody()
+        val request = HttpRequest.newBuilder(URI(url)).method(method, publisher)
+        key?.let { request.header("X-Api-Access-Key", it) }
+        if (body != null) request.header("Content-Type", "application/json")
+        return http.send(request.build(), HttpResponse.BodyHandlers.ofString())
+    }
+
+    fun json(response: HttpResponse<String>) = Json.parseToJsonElement(response.body())
+
+    fun destination(location: String, operation: String) = """{"locationName":"$location","operation":"$operation"}"""
+    fun orderOf(vararg destinations: String) = """{"destinations":[${destinations.joinToString(",")}]}"""
+    val order = orderOf(destination("Storage 01", "Load cargo"), destination("Goods out 01", "Unload cargo"))
+
+    test("transport orders: create, read, list, duplicate, withdraw") {
+        val (application, base) = start()
+        try {
+            val created = call("POST", "$base/transportOrders/T1", order)
+            created.statusCode() shouldBe 200
+            (json(created).jsonObject["name"]!!.jsonPrimitive.content) shouldBe "T1"
+
+            call("GET", "$base/transportOrders/T1").statusCode() shouldBe 200
+            (json(call("GET", "$base/transportOrders")) as JsonArray).size shouldBe 1
+            call("POST", "$base/transportOrders/T1", order).let {
+                it.statusCode() shouldBe 409
+                it.body() shouldBe """["an object named 'T1' exists already"]"""
+            }
+            call("POST", "$base/transportOrders/T1/withdrawal?immediate=true").statusCode() shouldBe 200
+            json(call("GET", "$base/transportOrders/T1")).jsonObject["state"]!!.jsonPrimitive.content shouldBe "FAILED"
+        } finally {
+            application.stop()
+        }
+    }
+
+    test("bad input is answered 400 with a message naming the problem, unknown objects 404") {
+        val (application, base) = start()
+        try {
+            call("POST", "$base/transportOrders/T2", "{not json").let {
+                it.statusCode() shouldBe 400
+                it.body() shouldStartWith "[\"Malformed request body"
+            }
+            call("POST", "$base/transportOrders/T3", orderOf(destination("Storage 01", "Drill"))).let {
+                it.statusCode() shouldBe 400
+                it.body() shouldContain "operation 'Drill' is not allowed at location 'Storage 01'"
+            }
+            call("POST", "$base/transportOrders/T4", orderOf(destination("Nowhere", "MOVE"))).statusCode() shouldBe 404
+            call("GET", "$base/transportOrders/missing").body() shouldBe """["unknown transport order 'missing'"]"""
+            call("GET", "$base/vehicles?procState=SLEEPING").statusCode() shouldBe 400
+            call("PUT", "$base/vehicles/Vehicle-01/paused?newValue=perhaps").statusCode() shouldBe 400
+            call("PUT", "$base/paths/No such path/locked?newValue=true".replace(" ", "%20")).statusCode() shouldBe 404
+            call("GET", "$base/peripheralJobs").statusCode() shouldBe 404
+        } finally {
+            application.stop()
+        }
+    }
+
+    test("vehicles, order sequences and locks") {
+        val (application, base) = start()
+        try {
+            val vehicles = json(call("GET", "$base/vehicles")).jsonArray
+            vehicles.size shouldBe 4
+            call("PUT", "$base/vehicles/Vehicle-02/integrationLevel?newValue=TO_BE_RESPECTED").statusCode() shouldBe 200
+            val vehicle = json(call("GET", "$base/vehicles/Vehicle-02")).jsonObject
+            vehicle["integrationLevel"]!!.jsonPrimitive.content shouldBe "TO_BE_RESPECTED"
+            call("GET", "$base/vehicles/Vehicle-02/commAdapter/attachmentInformation").body() shouldContain "step"
+
+            call("POST", "$base/orderSequences/S1", """{"properties":[]}""").statusCode() shouldBe 200
+            call("PUT", "$base/orderSequences/S1/complete").statusCode() shouldBe 200
+            json(call("GET", "$base/orderSequences/S1")).jsonObject["complete"]!!.jsonPrimitive.content shouldBe "true"
+
+            val path = "Point-0001 --- Point-0002"
+            call("PUT", "$base/paths/${path.replace(" ", "%20")}/locked?newValue=true").statusCode() shouldBe 200
+            val paths = json(call("GET", "$base/plantModel")).jsonObject["paths"]!!.jsonArray.map { it as JsonObject }
+            val locked = paths.single { it["name"]!!.jsonPrimitive.content == path }["locked"]
+            locked!!.jsonPrimitive.content shouldBe "true"
+        } finally {
+            application.stop()
+        }
+    }
+
+    test("with an access key, requests without it are refused with 403") {
+        val (application, base) = start("web.accessKey=secret")
+        try {
+            call("GET", "$base/vehicles").statusCode() shouldBe 403
+            call("GET", "$base/vehicles", key = "wrong").statusCode() shouldBe 403
+            call("GET", "$base/vehicles", key = "secret").statusCode() shouldBe 200
+        } finally {
+            application.stop()
+        }
+    }
+})
