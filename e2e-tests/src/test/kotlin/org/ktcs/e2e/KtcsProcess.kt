@@ -1,5 +1,6 @@
 package org.ktcs.e2e
 
+import java.io.IOException
 import java.nio.file.Path
 import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit
@@ -20,8 +21,12 @@ class KtcsProcess(vararg args: String, workingDirectory: Path = RepositoryRoot.p
             .start()
     private val lines = LinkedBlockingQueue<String>()
     private val seen = mutableListOf<String>()
-    private val reader = thread(name = "ktcs-output") {
-        process.inputStream.bufferedReader().useLines { it.forEach(lines::put) }
+    private val reader = thread(name = "ktcs-output", isDaemon = true) {
+        try {
+            process.inputStream.bufferedReader().useLines { it.forEach(lines::put) }
+        } catch (_: IOException) {
+            // close() killed the process while its output was being read: nothing more to read.
+        }
     }
 
     /** Waits for a line containing [text] and returns it; fails with everything seen so far on time-out. */

@@ -35,6 +35,15 @@ class LauncherTest : FunSpec({
         }
     }
 
+    test("DELETE /v1/kernel from this machine shuts kTCS down with exit code 0") {
+        KtcsProcess(*local).use { ktcs ->
+            val base = Regex("web API (http://\\S+)/v1").find(ktcs.awaitLine("kTCS ready"))!!.groupValues[1]
+            val request = HttpRequest.newBuilder(URI("$base/v1/kernel")).DELETE().build()
+            HttpClient.newHttpClient().send(request, HttpResponse.BodyHandlers.ofString()).statusCode() shouldBe 200
+            ktcs.awaitExit() shouldBe 0
+        }
+    }
+
     test("loads a model given with --model") {
         val model = Files.createTempFile("plant", ".xml")
         Files.writeString(model, TINY_MODEL)

@@ -13,6 +13,7 @@ import org.ktcs.kernel.extension.ExtensionException
 import org.ktcs.kernel.extension.KtcsExtension
 import org.ktcs.kernel.kernelModule
 import org.ktcs.kernel.web.KernelVersion
+import org.ktcs.kernel.web.ShutdownRequest
 import org.ktcs.kernel.web.WebServer
 import org.slf4j.LoggerFactory
 
@@ -24,6 +25,7 @@ class KernelApplication(
     private val config: KtcsConfig,
     private val loaded: LoadedModel,
     private val extensions: List<KtcsExtension>,
+    private val shutdownRequest: ShutdownRequest = ShutdownRequest {},
 ) {
     private val log = LoggerFactory.getLogger(KernelApplication::class.java)
     private var koin: KoinApplication? = null
@@ -62,7 +64,7 @@ class KernelApplication(
 
     private fun applicationModule() = module {
         single { KernelVersion.ofThisBuild() }
-        single { WebServer(get(), get(), get()) }
+        single { WebServer(get(), get(), get(), shutdownRequest) }
     }
 
     private fun moduleOf(extension: KtcsExtension) = try {

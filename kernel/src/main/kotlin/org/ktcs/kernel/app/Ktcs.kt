@@ -39,10 +39,12 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
     }
 
     private fun runKernel(options: RunOptions, awaitShutdown: (() -> Unit)?): Int {
-        val waitForShutdown = awaitShutdown ?: ShutdownSignal.install()::await
+        val signal = if (awaitShutdown == null) ShutdownSignal.install() else null
+        val waitForShutdown = awaitShutdown ?: signal!!::await
         val config = config(options)
         Logging.apply(config)
-        val application = KernelApplication(config, PlantModelLoader.load(options.model), Extensions.discover())
+        val application =
+            KernelApplication(config, PlantModelLoader.load(options.model), Extensions.discover()) { signal?.request() }
         application.start()
         try {
             waitForShutdown()

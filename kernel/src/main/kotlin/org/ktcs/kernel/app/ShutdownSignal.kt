@@ -15,6 +15,11 @@ class ShutdownSignal private constructor() {
         latch.await()
     }
 
+    /** Ends [await] as a signal would, e.g. for `DELETE /v1/kernel`. */
+    fun request() {
+        latch.countDown()
+    }
+
     companion object {
         fun install(): ShutdownSignal = ShutdownSignal().also { signal ->
             listOf("INT", "TERM").forEach { name -> Signal.handle(Signal(name)) { signal.latch.countDown() } }

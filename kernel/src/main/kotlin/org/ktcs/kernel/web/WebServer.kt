@@ -24,11 +24,17 @@ import org.ktcs.kernel.web.v1.orders.transportOrderRoutes
 import org.ktcs.kernel.web.v1.plantmodel.plantModelRoutes
 import org.ktcs.kernel.web.v1.vehicles.vehicleRoutes
 
+/** Asks the application to shut down, as `DELETE /v1/kernel` does. */
+fun interface ShutdownRequest {
+    fun request()
+}
+
 /** The HTTP server of the kernel application (Ktor, CIO engine). */
 class WebServer(
     private val config: KtcsConfig,
     private val version: KernelVersion,
     private val services: KernelServices,
+    private val shutdown: ShutdownRequest,
 ) {
     private var server: EmbeddedServer<*, *>? = null
 
@@ -37,7 +43,7 @@ class WebServer(
         val host = config[KtcsSettings.webBindAddress]
         val accessKey = config[KtcsSettings.webAccessKey]
         val started = embeddedServer(CIO, port = config[KtcsSettings.webPort], host = host) {
-            webModule(version, services, accessKey)
+            webModule(version, services, accessKey, shutdown)
         }
             .start(wait = false)
         server = started
@@ -52,13 +58,18 @@ class WebServer(
 }
 
 /** Installs the plugins and mounts the routes; also used by tests with Ktor's test host. */
-fun Application.webModule(version: KernelVersion, services: KernelServices, accessKey: String = "") {
+fun Application.webModule(
+    version: KernelVersion,
+    services: KernelServices,
+    accessKey: String = "",
+    shutdown: ShutdownRequest = ShutdownRequest {},
+) {
     install(ContentNegotiation) { json(V1Json.json) }
     installErrorResponses()
     routing {
         route("/v1") {
             install(AccessKey) { key = accessKey }
-            kernelRoutes(version)
+            kernelRoutes(version, shutdown)
             transportOrderRoutes(services)
             orderSequenceRoutes(services)
             vehicleRoutes(services)

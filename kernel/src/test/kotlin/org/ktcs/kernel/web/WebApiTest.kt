@@ -33,9 +33,12 @@ class WebApiTest : FunSpec({
     }
     val http = HttpClient.newHttpClient()
 
+    var shutdownRequests = 0
+
     fun start(vararg settings: String): Pair<KernelApplication, String> {
         val config = ConfigLoader().load(null, emptyMap(), listOf("web.bindAddress=127.0.0.1", "web.port=0") + settings)
-        val application = KernelApplication(config, PlantModelLoader.loadDemo(), listOf(testVehicles))
+        val application =
+            KernelApplication(config, PlantModelLoader.loadDemo(), listOf(testVehicles)) { shutdownRequests++ }
         val base = Regex("web API (http://\\S+/v1)").find(application.start())!!.groupValues[1]
         return application to base
     }
@@ -126,6 +129,26 @@ class WebApiTest : FunSpec({
             call("GET", "$base/vehicles").statusCode() shouldBe 403
             call("GET", "$base/vehicles", key = "wrong").statusCode() shouldBe 403
             call("GET", "$base/vehicles", key = "secret").statusCode() shouldBe 200
+        } finally {
+            application.stop()
+        }
+    }
+
+    test("topology updates name existing paths; DELETE /kernel from this machine asks the application to stop") {
+        val (application, base) = start()
+        try {
+            call(
+                "POST",
+                "$base/plantModel/topologyUpdateRequest",
+                """{"paths":["Point-0001 --- Point-0002"]}""",
+            ).statusCode() shouldBe
+                200
+            call("POST", "$base/plantModel/topologyUpdateRequest", """{"paths":["Nope"]}""").body() shouldBe
+                """["unknown path 'Nope'"]"""
+            call("POST", "$base/plantModel/topologyUpdateRequest", """{}""").body() shouldBe """["paths is missing"]"""
+
+            call("DELETE", "$base/kernel").statusCode() shouldBe 200
+            shutdownRequests shouldBe 1
         } finally {
             application.stop()
         }

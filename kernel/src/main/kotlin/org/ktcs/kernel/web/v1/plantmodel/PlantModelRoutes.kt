@@ -4,15 +4,31 @@ import io.ktor.http.HttpStatusCode
 import io.ktor.server.response.respond
 import io.ktor.server.routing.Route
 import io.ktor.server.routing.get
+import io.ktor.server.routing.post
 import io.ktor.server.routing.put
+import kotlinx.serialization.Serializable
+import org.ktcs.api.error.ObjectUnknownException
 import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.web.v1.booleanQuery
 import org.ktcs.kernel.web.v1.pathName
+import org.ktcs.kernel.web.v1.receiveJson
+import org.ktcs.kernel.web.v1.required
 import org.ktcs.kernel.web.v1.requiredQuery
+
+/** The body of `POST /plantModel/topologyUpdateRequest`: the paths whose routing properties changed. */
+@Serializable
+data class TopologyUpdateRequest(val paths: List<String>? = null)
 
 /** The plant model and the locks on paths and locations. */
 fun Route.plantModelRoutes(services: KernelServices) {
     get("/plantModel") { call.respond(services.plantModel.plantModel().toDto()) }
+    post("/plantModel/topologyUpdateRequest") {
+        val paths = call.receiveJson<TopologyUpdateRequest>().paths.required("paths")
+        val model = services.plantModel.plantModel()
+        paths.firstOrNull { model.path(it) == null }?.let { throw ObjectUnknownException("unknown path '$it'") }
+        services.plantModel.updateRoutingTopology()
+        call.respond(HttpStatusCode.OK)
+    }
     put("/paths/{NAME}/locked") {
         call.requiredQuery("newValue")
         services.plantModel.setPathLocked(call.pathName(), call.booleanQuery("newValue"))
