@@ -12,17 +12,22 @@ import io.ktor.server.response.respond
 import io.ktor.server.routing.post
 import io.ktor.server.routing.route
 import io.ktor.server.routing.routing
+import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
 import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.config.KtcsConfig
 import org.ktcs.kernel.config.KtcsSettings
+import org.ktcs.kernel.events.SubscriberTooSlowException
 import org.ktcs.kernel.web.plugins.AccessKey
 import org.ktcs.kernel.web.plugins.installErrorResponses
 import org.ktcs.kernel.web.v1.V1Json
+import org.ktcs.kernel.web.v1.events.StatusEventBuffer
+import org.ktcs.kernel.web.v1.events.eventRoutes
 import org.ktcs.kernel.web.v1.orders.orderSequenceRoutes
 import org.ktcs.kernel.web.v1.orders.transportOrderRoutes
 import org.ktcs.kernel.web.v1.plantmodel.plantModelRoutes
 import org.ktcs.kernel.web.v1.vehicles.vehicleRoutes
+import org.slf4j.LoggerFactory
 
 /** Asks the application to shut down, as `DELETE /v1/kernel` does. */
 fun interface ShutdownRequest {
@@ -66,6 +71,8 @@ fun Application.webModule(
 ) {
     install(ContentNegotiation) { json(V1Json.json) }
     installErrorResponses()
+    val statusEvents = StatusEventBuffer()
+    launch { feed(statusEvents, services) }
     routing {
         route("/v1") {
             install(AccessKey) { key = accessKey }
@@ -74,10 +81,24 @@ fun Application.webModule(
             orderSequenceRoutes(services)
             vehicleRoutes(services)
             plantModelRoutes(services)
+            eventRoutes(services, statusEvents)
             post("/dispatcher/trigger") {
                 services.dispatcher.dispatch()
                 call.respond(HttpStatusCode.OK)
             }
+        }
+    }
+}
+
+// Keeps the long-polling buffer filled for as long as the server runs; after falling behind it subscribes again.
+private suspend fun feed(buffer: StatusEventBuffer, services: KernelServices) {
+    while (true) {
+        try {
+            services.events().collect(buffer::add)
+        } catch (error: SubscriberTooSlowException) {
+            LoggerFactory.getLogger(
+                "org.ktcs.kernel.web",
+            ).warn("status events for GET /v1/events fell behind; some were lost")
         }
     }
 }

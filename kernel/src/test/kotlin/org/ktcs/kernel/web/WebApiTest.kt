@@ -1,6 +1,7 @@
 package org.ktcs.kernel.web
 
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldContainAll
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.string.shouldStartWith
@@ -149,6 +150,48 @@ class WebApiTest : FunSpec({
 
             call("DELETE", "$base/kernel").statusCode() shouldBe 200
             shutdownRequests shouldBe 1
+        } finally {
+            application.stop()
+        }
+    }
+
+    test("GET /events returns status messages by sequence number and waits for new ones up to the timeout") {
+        val (application, base) = start()
+        try {
+            call("GET", "$base/events?timeout=20000").statusCode() shouldBe 400
+            call("GET", "$base/events?minSequenceNo=abc").statusCode() shouldBe 400
+            call("POST", "$base/transportOrders/T9", order).statusCode() shouldBe 200
+
+            val first = json(call("GET", "$base/events?timeout=5000")).jsonObject["statusMessages"]!!.jsonArray
+            val numbers = first.map { it.jsonObject["sequenceNumber"]!!.jsonPrimitive.content.toLong() }
+            numbers shouldBe numbers.sorted()
+            first.map { it.jsonObject["type"]!!.jsonPrimitive.content }.toSet() shouldContainAll setOf("TransportOrder")
+
+            val next = numbers.last() + 1_000_000
+            val started = System.nanoTime()
+            json(
+                call("GET", "$base/events?minSequenceNo=$next&timeout=300"),
+            ).jsonObject["statusMessages"]!!.jsonArray.size shouldBe
+                0
+            ((System.nanoTime() - started) / 1_000_000 >= 250) shouldBe true
+        } finally {
+            application.stop()
+        }
+    }
+
+    test("GET /sse streams the kinds of events the client asked for, named as openTCS names them") {
+        val (application, base) = start()
+        try {
+            val request = HttpRequest.newBuilder(URI("$base/sse?/events/transportOrders=true")).build()
+            val stream = http.send(request, HttpResponse.BodyHandlers.ofLines())
+            stream.headers().firstValue("Content-Type").get() shouldStartWith "text/event-stream"
+            call("POST", "$base/transportOrders/T10", order).statusCode() shouldBe 200
+            val lines = stream.body().iterator()
+            val names = generateSequence { if (lines.hasNext()) lines.next() else null }
+                .filter { it.startsWith("event: ") }
+                .take(2)
+                .toList()
+            names shouldBe listOf("event: /events/transportOrders", "event: /events/transportOrders")
         } finally {
             application.stop()
         }
