@@ -31,6 +31,18 @@ object KtcsSettings {
         "Key a web API client must send in the X-Api-Access-Key header (empty: no key needed).",
         { it },
     )
+    val webAllowedOrigins = Setting(
+        "web.allowedOrigins",
+        "*",
+        "Value of the Access-Control-Allow-Origin header for browser clients from other origins (empty: none).",
+        { it },
+    )
+    val webMaxRequestBodySize = longSetting(
+        "web.maxRequestBodySize",
+        200,
+        1L..10_000L,
+        "The largest request body the web API reads, in MB; larger ones get 413.",
+    )
     val xmlOrdersPort =
         intSetting("xml.orders.port", 55555, 0..MAX_PORT, "TCP port of the XML order channel (0: any free port).")
     val xmlStatusPort =
@@ -209,6 +221,8 @@ object KtcsSettings {
         webBindAddress,
         webPort,
         webAccessKey,
+        webAllowedOrigins,
+        webMaxRequestBodySize,
         xmlOrdersPort,
         xmlStatusPort,
         logLevel,

@@ -19,6 +19,8 @@ import org.ktcs.kernel.config.KtcsConfig
 import org.ktcs.kernel.config.KtcsSettings
 import org.ktcs.kernel.events.SubscriberTooSlowException
 import org.ktcs.kernel.web.plugins.AccessKey
+import org.ktcs.kernel.web.plugins.Cors
+import org.ktcs.kernel.web.plugins.RequestSizeLimit
 import org.ktcs.kernel.web.plugins.installErrorResponses
 import org.ktcs.kernel.web.v1.V1Json
 import org.ktcs.kernel.web.v1.events.StatusEventBuffer
@@ -28,6 +30,15 @@ import org.ktcs.kernel.web.v1.orders.transportOrderRoutes
 import org.ktcs.kernel.web.v1.plantmodel.plantModelRoutes
 import org.ktcs.kernel.web.v1.vehicles.vehicleRoutes
 import org.slf4j.LoggerFactory
+
+/** What the web API's plugins are set to (from the `web.*` settings). */
+data class WebOptions(
+    val accessKey: String = "",
+    val allowedOrigins: String = "*",
+    val maxRequestBodyBytes: Long = 200L *
+        1024 *
+        1024,
+)
 
 /** Asks the application to shut down, as `DELETE /v1/kernel` does. */
 fun interface ShutdownRequest {
@@ -46,9 +57,13 @@ class WebServer(
     /** Starts listening and returns the base URL it serves, with the port actually bound. */
     fun start(): String {
         val host = config[KtcsSettings.webBindAddress]
-        val accessKey = config[KtcsSettings.webAccessKey]
+        val options = WebOptions(
+            accessKey = config[KtcsSettings.webAccessKey],
+            allowedOrigins = config[KtcsSettings.webAllowedOrigins],
+            maxRequestBodyBytes = config[KtcsSettings.webMaxRequestBodySize] * 1024 * 1024,
+        )
         val started = embeddedServer(CIO, port = config[KtcsSettings.webPort], host = host) {
-            webModule(version, services, accessKey, shutdown)
+            webModule(version, services, options, shutdown)
         }
             .start(wait = false)
         server = started
@@ -66,16 +81,18 @@ class WebServer(
 fun Application.webModule(
     version: KernelVersion,
     services: KernelServices,
-    accessKey: String = "",
+    options: WebOptions = WebOptions(),
     shutdown: ShutdownRequest = ShutdownRequest {},
 ) {
     install(ContentNegotiation) { json(V1Json.json) }
     installErrorResponses()
+    install(Cors) { allowedOrigins = options.allowedOrigins }
+    install(RequestSizeLimit) { maxBytes = options.maxRequestBodyBytes }
     val statusEvents = StatusEventBuffer()
     launch { feed(statusEvents, services) }
     routing {
         route("/v1") {
-            install(AccessKey) { key = accessKey }
+            install(AccessKey) { key = options.accessKey }
             kernelRoutes(version, shutdown)
             transportOrderRoutes(services)
             orderSequenceRoutes(services)

@@ -196,4 +196,23 @@ class WebApiTest : FunSpec({
             application.stop()
         }
     }
+
+    test("browser clients from other origins are allowed as configured; oversized bodies get 413") {
+        val (application, base) = start("web.allowedOrigins=https://plant.example", "web.maxRequestBodySize=1")
+        try {
+            val preflight = call("OPTIONS", "$base/transportOrders/T11")
+            preflight.statusCode() shouldBe 200
+            preflight.headers().firstValue("Access-Control-Allow-Origin").get() shouldBe "https://plant.example"
+            call("GET", "$base/vehicles").headers().firstValue("Access-Control-Allow-Origin").get() shouldBe
+                "https://plant.example"
+
+            val huge = "{\"destinations\":[], \"padding\":\"" + "x".repeat(2 * 1024 * 1024) + "\"}"
+            call("POST", "$base/transportOrders/T12", huge).let {
+                it.statusCode() shouldBe 413
+                it.body() shouldContain "larger than the limit of 1048576 bytes"
+            }
+        } finally {
+            application.stop()
+        }
+    }
 })
