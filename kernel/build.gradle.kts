@@ -20,6 +20,7 @@ dependencies {
     api(libs.ktor.server.content.negotiation)
     api(libs.ktor.serialization.kotlinx.json)
     api(libs.ktor.server.status.pages)
+    api(libs.ktor.server.websockets)
     api(libs.jgrapht.core)
     api(libs.jackson.dataformat.xml)
     api(libs.jackson.module.kotlin)

@@ -12,6 +12,7 @@ import io.ktor.server.response.respond
 import io.ktor.server.routing.post
 import io.ktor.server.routing.route
 import io.ktor.server.routing.routing
+import io.ktor.server.websocket.WebSockets
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
 import org.ktcs.api.service.KernelServices
@@ -29,6 +30,7 @@ import org.ktcs.kernel.web.v1.orders.orderSequenceRoutes
 import org.ktcs.kernel.web.v1.orders.transportOrderRoutes
 import org.ktcs.kernel.web.v1.plantmodel.plantModelRoutes
 import org.ktcs.kernel.web.v1.vehicles.vehicleRoutes
+import org.ktcs.kernel.web.ws.webSocketRoutes
 import org.slf4j.LoggerFactory
 
 /** What the web API's plugins are set to (from the `web.*` settings). */
@@ -88,6 +90,7 @@ fun Application.webModule(
     installErrorResponses()
     install(Cors) { allowedOrigins = options.allowedOrigins }
     install(RequestSizeLimit) { maxBytes = options.maxRequestBodyBytes }
+    install(WebSockets)
     val statusEvents = StatusEventBuffer()
     launch { feed(statusEvents, services) }
     routing {
@@ -99,6 +102,7 @@ fun Application.webModule(
             vehicleRoutes(services)
             plantModelRoutes(services)
             eventRoutes(services, statusEvents)
+            webSocketRoutes(services)
             post("/dispatcher/trigger") {
                 services.dispatcher.dispatch()
                 call.respond(HttpStatusCode.OK)

@@ -24,6 +24,10 @@ import java.net.URI
 import java.net.http.HttpClient
 import java.net.http.HttpRequest
 import java.net.http.HttpResponse
+import java.net.http.WebSocket
+import java.util.concurrent.CompletionStage
+import java.util.concurrent.LinkedBlockingQueue
+import java.util.concurrent.TimeUnit
 
 /** The web API v1 of a running kernel, over real HTTP: happy paths, bad input, 404, 409, the access key. */
 class WebApiTest : FunSpec({
@@ -211,6 +215,48 @@ class WebApiTest : FunSpec({
                 it.statusCode() shouldBe 413
                 it.body() shouldContain "larger than the limit of 1048576 bytes"
             }
+        } finally {
+            application.stop()
+        }
+    }
+
+    test("the WebSocket sends a snapshot per topic, then every change in kernel order; bad messages get an error") {
+        val (application, base) = start()
+        try {
+            val received = LinkedBlockingQueue<String>()
+            val listener = object : WebSocket.Listener {
+                private val partial = StringBuilder()
+
+                override fun onText(socket: WebSocket, data: CharSequence, last: Boolean): CompletionStage<*>? {
+                    partial.append(data)
+                    if (last) received.put(partial.toString()).also { partial.clear() }
+                    socket.request(1)
+                    return null
+                }
+            }
+            val ws = URI(base.replace("http:", "ws:") + "/ws")
+            val socket = http.newWebSocketBuilder().buildAsync(ws, listener).get()
+            fun next() = Json.parseToJsonElement(received.poll(10, TimeUnit.SECONDS)!!).jsonObject
+
+            socket.sendText("""{"type":"subscribe","topics":["nonsense"]}""", true).get()
+            next()["type"]!!.jsonPrimitive.content shouldBe "error"
+
+            socket.sendText("""{"type":"subscribe","topics":["vehicles","transportOrders"]}""", true).get()
+            val vehicles = next()
+            vehicles["type"]!!.jsonPrimitive.content shouldBe "snapshot"
+            vehicles["topic"]!!.jsonPrimitive.content shouldBe "vehicles"
+            vehicles["objects"]!!.jsonArray.size shouldBe 4
+            vehicles["v"]!!.jsonPrimitive.content shouldBe "1"
+            next()["topic"]!!.jsonPrimitive.content shouldBe "transportOrders"
+
+            call("POST", "$base/transportOrders/W1", order).statusCode() shouldBe 200
+            fun JsonObject.text(key: String) = this[key]!!.jsonPrimitive.content
+            val events = generateSequence { next() }.filter { it.text("topic") == "transportOrders" }.take(3).toList()
+            val numbers = events.map { it.text("seq").toLong() }
+            numbers shouldBe numbers.sorted()
+            events.first()["previous"]!!.toString() shouldBe "null"
+            events.map { it["current"]!!.jsonObject.text("state") } shouldBe listOf("RAW", "ACTIVE", "DISPATCHABLE")
+            socket.abort()
         } finally {
             application.stop()
         }

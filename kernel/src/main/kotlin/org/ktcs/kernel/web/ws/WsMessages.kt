@@ -1,0 +1,62 @@
+package org.ktcs.kernel.web.ws
+
+import kotlinx.serialization.SerialName
+import kotlinx.serialization.Serializable
+import kotlinx.serialization.json.JsonElement
+
+/** The version of the WebSocket protocol; it is in every message the server sends. */
+const val WS_PROTOCOL_VERSION = 1
+
+/** What a client may say: which topics it wants. Unknown topics are refused with an error message. */
+@Serializable
+data class WsClientMessage(val type: String, val topics: List<String> = emptyList())
+
+/** What the server says. */
+@Serializable
+sealed interface WsServerMessage {
+    val v: Int
+}
+
+/** Everything of [topic] as it is now; sent on subscribe and after the client missed events. */
+@Serializable
+@SerialName("snapshot")
+data class WsSnapshot(
+    val topic: String,
+    val objects: List<JsonElement>,
+    override val v: Int = WS_PROTOCOL_VERSION,
+) : WsServerMessage
+
+/** One change, in kernel order: [previous] is `null` for a new object, [current] for a removed one. */
+@Serializable
+@SerialName("event")
+data class WsEvent(
+    val topic: String,
+    val seq: Long,
+    val previous: JsonElement?,
+    val current: JsonElement?,
+    override val v: Int = WS_PROTOCOL_VERSION,
+) : WsServerMessage
+
+/** The client fell behind and events were dropped; fresh snapshots of its topics follow. */
+@Serializable
+@SerialName("missed")
+data class WsMissed(val reason: String, override val v: Int = WS_PROTOCOL_VERSION) : WsServerMessage
+
+/** The client sent something the server does not understand. */
+@Serializable
+@SerialName("error")
+data class WsError(val message: String, override val v: Int = WS_PROTOCOL_VERSION) : WsServerMessage
+
+/** The topics a client can subscribe to. */
+enum class WsTopic(val wireName: String) {
+    VEHICLES("vehicles"),
+    TRANSPORT_ORDERS("transportOrders"),
+    ORDER_SEQUENCES("orderSequences"),
+    PLANT_MODEL("plantModel"),
+    NOTIFICATIONS("notifications"),
+    ;
+
+    companion object {
+        fun of(name: String): WsTopic? = entries.firstOrNull { it.wireName == name }
+    }
+}

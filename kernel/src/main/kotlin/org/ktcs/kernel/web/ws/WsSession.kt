@@ -1,0 +1,97 @@
+package org.ktcs.kernel.web.ws
+
+import io.ktor.server.websocket.DefaultWebSocketServerSession
+import io.ktor.websocket.Frame
+import io.ktor.websocket.readText
+import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.Job
+import kotlinx.coroutines.cancelAndJoin
+import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.launch
+import kotlinx.serialization.SerializationException
+import org.ktcs.api.event.KernelEvent
+import org.ktcs.api.service.KernelServices
+import org.ktcs.kernel.events.SubscriberTooSlowException
+import org.ktcs.kernel.web.v1.V1Json
+
+/**
+ * One WebSocket client. It subscribes to topics; it gets a snapshot of each, then every change in kernel order.
+ * Events wait in a buffer of [capacity]; a client that falls that far behind is told it missed events and gets
+ * fresh snapshots, so it never slows the kernel or the other clients.
+ */
+class WsSession(
+    private val socket: DefaultWebSocketServerSession,
+    private val services: KernelServices,
+    private val capacity: Int = 1000,
+) {
+    private val json = V1Json.json
+    private var topics = emptySet<WsTopic>()
+    private var sequence = 0L
+
+    suspend fun run() = coroutineScope {
+        var feed: Job? = null
+        for (frame in socket.incoming) {
+            if (frame !is Frame.Text) continue
+            val requested = parseSubscription(frame.readText()) ?: continue
+            feed?.cancelAndJoin()
+            topics = requested
+            feed = launch { streamForever() }
+        }
+        feed?.cancel()
+    }
+
+    private suspend fun parseSubscription(text: String): Set<WsTopic>? {
+        val message = try {
+            json.decodeFromString<WsClientMessage>(text)
+        } catch (error: SerializationException) {
+            return null.also { send(WsError("not a kTCS WebSocket message: ${error.message}")) }
+        } catch (error: IllegalArgumentException) {
+            return null.also { send(WsError("not a kTCS WebSocket message: ${error.message}")) }
+        }
+        if (message.type !=
+            "subscribe"
+        ) {
+            return null.also { send(WsError("unknown message type '${message.type}'; expected 'subscribe'")) }
+        }
+        val unknown = message.topics.filter { WsTopic.of(it) == null }
+        if (unknown.isNotEmpty()) {
+            return null.also { send(WsError("unknown topics $unknown; known: ${WsTopic.entries.map { it.wireName }}")) }
+        }
+        return message.topics.mapNotNullTo(LinkedHashSet(), WsTopic::of)
+    }
+
+    private suspend fun streamForever(): Nothing = coroutineScope {
+        while (true) {
+            val events = Channel<KernelEvent>(capacity)
+            // Subscribe before taking the snapshots, so no change falls between the two.
+            val collector = launch(start = CoroutineStart.UNDISPATCHED) {
+                try {
+                    services.events().collect {
+                        if (!events.trySend(it).isSuccess) events.close(SubscriberTooSlowException())
+                    }
+                } catch (error: SubscriberTooSlowException) {
+                    events.close(error)
+                }
+            }
+            topics.forEach { send(WsSnapshot(it.wireName, WsTopics.snapshot(it, services))) }
+            try {
+                for (event in events) forward(event)
+            } catch (error: SubscriberTooSlowException) {
+                send(WsMissed("the client read too slowly; more than $capacity events were waiting"))
+            }
+            collector.cancel()
+        }
+        @Suppress("UNREACHABLE_CODE")
+        error("unreachable")
+    }
+
+    private suspend fun forward(event: KernelEvent) {
+        val change = WsTopics.change(event) ?: return
+        if (change.topic in topics) send(WsEvent(change.topic.wireName, sequence++, change.previous, change.current))
+    }
+
+    private suspend fun send(message: WsServerMessage) {
+        socket.send(Frame.Text(json.encodeToString(WsServerMessage.serializer(), message)))
+    }
+}
