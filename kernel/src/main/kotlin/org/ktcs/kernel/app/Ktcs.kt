@@ -81,10 +81,16 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
     /** The one-line message for errors a user caused, or `null` for bugs, which keep their stack trace. */
     private fun oneLine(error: Exception): String? = when (error) {
         is ConfigException, is ModelFileException, is ExtensionException -> error.message
+
         is InvalidModelException -> error.summaryLine()
+
         is java.net.BindException -> "cannot listen on the configured address: ${error.message}"
+
         is IllegalArgumentException -> error.message
-        else -> null
+
+        // Koin wraps an extension's failure to bind its port when it creates the extension.
+        else -> generateSequence(error.cause) { it.cause }.firstOrNull { it is java.net.BindException }
+            ?.let { "cannot listen on the configured address: ${it.message}" }
     }
 
     companion object {

@@ -47,6 +47,27 @@ object KtcsSettings {
         intSetting("xml.orders.port", 55555, 0..MAX_PORT, "TCP port of the XML order channel (0: any free port).")
     val xmlStatusPort =
         intSetting("xml.status.port", 44444, 0..MAX_PORT, "TCP port of the XML status channel (0: any free port).")
+    val xmlBindAddress =
+        stringSetting("xml.bindAddress", "0.0.0.0", "Address the XML order and status channels listen on.")
+    val xmlOrdersIdleTimeout = longSetting(
+        "xml.orders.idleTimeout",
+        10_000,
+        1L..3_600_000L,
+        "Milliseconds the XML order channel waits for a client that sends nothing before it closes the connection.",
+    )
+    val xmlOrdersInputLimit =
+        intSetting("xml.orders.inputLimit", 102_400, 1..67_108_864, "The largest XML order telegram, in bytes.")
+    val xmlStatusSeparator =
+        stringSetting("xml.status.separator", "|", "Written after every message on the XML status channel.")
+    val xmlStatusBufferSize = intSetting(
+        "xml.status.bufferSize",
+        1000,
+        1..1_000_000,
+        "Status messages queued for one client; a client that falls further behind is dropped.",
+    )
+    val xmlScriptsDirectory =
+        stringSetting("xml.scriptsDirectory", "scripts", "Directory of the .tcs batch scripts that XML telegrams name.")
+
     val loopbackTimeFactor = positiveDoubleSetting(
         "loopback.timeFactor",
         1.0,
@@ -225,6 +246,12 @@ object KtcsSettings {
         webMaxRequestBodySize,
         xmlOrdersPort,
         xmlStatusPort,
+        xmlBindAddress,
+        xmlOrdersIdleTimeout,
+        xmlOrdersInputLimit,
+        xmlStatusSeparator,
+        xmlStatusBufferSize,
+        xmlScriptsDirectory,
         logLevel,
         kernelEnableDrivers,
         kernelInitialIntegrationLevel,

@@ -1,0 +1,83 @@
+package org.ktcs.xmlchannels
+
+import kotlinx.coroutines.CoroutineExceptionHandler
+import kotlinx.coroutines.CoroutineName
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.SupervisorJob
+import kotlinx.coroutines.cancel
+import kotlinx.coroutines.launch
+import org.ktcs.api.service.KernelServices
+import org.ktcs.xmlchannels.orders.OrderChannelServer
+import org.ktcs.xmlchannels.orders.ScriptFiles
+import org.ktcs.xmlchannels.status.StatusChannelServer
+import org.ktcs.xmlchannels.status.StatusMessages
+import org.slf4j.LoggerFactory
+import java.net.Socket
+import java.time.Clock
+import java.util.concurrent.CopyOnWriteArrayList
+
+/**
+ * The XML order and status channels, openTCS 4.x's TCP host interface. [start] listens on both ports, [close]
+ * stops listening and drops every connection. All I/O runs in this component's own scope, off the kernel context;
+ * the kernel is reached only through [KernelServices].
+ */
+class XmlChannels(
+    private val services: KernelServices,
+    private val settings: XmlChannelSettings,
+    private val clock: Clock = Clock.systemDefaultZone(),
+) : AutoCloseable {
+    private val log = LoggerFactory.getLogger(XmlChannels::class.java)
+    private val scope = CoroutineScope(
+        SupervisorJob() + Dispatchers.IO.limitedParallelism(MAX_THREADS) + CoroutineName("xml-channels") +
+            CoroutineExceptionHandler { _, error -> log.error("XML channels: unexpected failure", error) },
+    )
+    private val servers = CopyOnWriteArrayList<TcpServer>()
+    private val statusChannel = StatusChannelServer(
+        StatusMessages(clock, settings.statusSeparator),
+        settings.statusBufferSize,
+    )
+
+    /** The bound order channel port, once started. */
+    var ordersPort: Int = -1
+        private set
+
+    /** The bound status channel port, once started. */
+    var statusPort: Int = -1
+        private set
+
+    /** Status channel clients connected now; for tests and monitoring. */
+    val statusClients get() = statusChannel.clientCount
+
+    /** Listens on both ports; if either can't be bound, nothing stays open. */
+    fun start(): XmlChannels = apply {
+        try {
+            ScriptFiles(settings.scriptsDirectory).writeTemplate()
+            val orderChannel = OrderChannelServer(services.transportOrders, settings)
+            ordersPort = listen(settings.ordersPort, orderChannel::serve)
+            scope.launch { statusChannel.broadcast(services.events()) }
+            statusPort = listen(settings.statusPort, statusChannel::serve)
+        } catch (error: Exception) {
+            close()
+            throw error
+        }
+        log.info("XML channels: orders on port {}, status on port {}", ordersPort, statusPort)
+    }
+
+    private fun listen(port: Int, serve: suspend (Socket) -> Unit): Int {
+        val server = TcpServer(scope, settings.bindAddress, port)
+        servers += server
+        server.start(serve)
+        return server.port
+    }
+
+    override fun close() {
+        servers.forEach(TcpServer::close)
+        scope.cancel()
+    }
+
+    private companion object {
+        // Each order connection and each status client blocks up to two threads in socket I/O.
+        const val MAX_THREADS = 512
+    }
+}

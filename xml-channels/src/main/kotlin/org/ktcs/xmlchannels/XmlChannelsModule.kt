@@ -1,0 +1,16 @@
+package org.ktcs.xmlchannels
+
+import org.koin.core.module.Module
+import org.koin.dsl.module
+import org.koin.dsl.onClose
+import org.ktcs.kernel.config.KtcsConfig
+
+/**
+ * The XML channels' Koin definitions: they start listening when the kernel's Koin application is created (the
+ * kernel creates `createdAtStart` definitions then) and stop when it is closed.
+ */
+fun xmlChannelsModule(settings: (KtcsConfig) -> XmlChannelSettings = XmlChannelSettings::from): Module = module {
+    single(createdAtStart = true) {
+        XmlChannels(get(), settings(getOrNull<KtcsConfig>() ?: KtcsConfig.defaults())).start()
+    } onClose { it?.close() }
+}
