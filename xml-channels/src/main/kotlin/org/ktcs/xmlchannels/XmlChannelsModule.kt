@@ -4,6 +4,7 @@ import org.koin.core.module.Module
 import org.koin.dsl.module
 import org.koin.dsl.onClose
 import org.ktcs.kernel.config.KtcsConfig
+import org.ktcs.kernel.extension.ServedAddresses
 
 /**
  * The XML channels' Koin definitions: they start listening when the kernel's Koin application is created (the
@@ -13,4 +14,11 @@ fun xmlChannelsModule(settings: (KtcsConfig) -> XmlChannelSettings = XmlChannelS
     single(createdAtStart = true) {
         XmlChannels(get(), settings(getOrNull<KtcsConfig>() ?: KtcsConfig.defaults())).start()
     } onClose { it?.close() }
+    single<ServedAddresses> {
+        ServedAddresses {
+            val channels = get<XmlChannels>()
+            val host = settings(getOrNull<KtcsConfig>() ?: KtcsConfig.defaults()).bindAddress
+            listOf("XML orders tcp://$host:${channels.ordersPort}", "XML status tcp://$host:${channels.statusPort}")
+        }
+    }
 }

@@ -11,6 +11,7 @@ import org.ktcs.kernel.context.RealTimeKernelContext
 import org.ktcs.kernel.core.KernelCore
 import org.ktcs.kernel.extension.ExtensionException
 import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.kernel.extension.ServedAddresses
 import org.ktcs.kernel.kernelModule
 import org.ktcs.kernel.web.KernelVersion
 import org.ktcs.kernel.web.ShutdownRequest
@@ -36,7 +37,9 @@ class KernelApplication(
 
     /** Starts everything and returns the line announcing readiness (also logged). */
     fun start(): String {
-        val app = koinApplication {
+        // Extensions that start at once (the XML channels) are created after the kernel started, so their first
+        // request finds it running.
+        val app = koinApplication(createEagerInstances = false) {
             slf4jLogger(Level.ERROR)
             modules(kernelModule(config, loaded.model, context), applicationModule())
             extensions.forEach { extension -> modules(moduleOf(extension)) }
@@ -44,8 +47,10 @@ class KernelApplication(
         koin = app
         val core = app.koin.get<KernelCore>()
         runBlocking { context.call { core.start() } }
+        app.createEagerInstances()
         val webAddress = app.koin.get<WebServer>().start()
-        val ready = readyLine(webAddress)
+        val ready =
+            readyLine(listOf("web API $webAddress/v1") + app.koin.getAll<ServedAddresses>().flatMap { it.addresses() })
         log.info(ready)
         return ready
     }
@@ -73,10 +78,10 @@ class KernelApplication(
         throw ExtensionException("extension '${extension.name}' failed to provide its module: ${error.message}", error)
     }
 
-    private fun readyLine(webAddress: String): String {
+    private fun readyLine(addresses: List<String>): String {
         val model = loaded.model
         val extensionNames = extensions.joinToString { it.name }.ifEmpty { "none" }
         return "kTCS ready: model '${model.name}' from ${loaded.source} (${model.summary()}); " +
-            "web API $webAddress/v1; extensions: $extensionNames"
+            "${addresses.joinToString("; ")}; extensions: $extensionNames"
     }
 }

@@ -20,7 +20,8 @@ class SimulationKernel(
     extensionModules: List<Module> = emptyList(),
     val context: VirtualTimeKernelContext = VirtualTimeKernelContext(),
 ) : AutoCloseable {
-    private val koin: KoinApplication = koinApplication {
+    // No eager instances: extensions that serve the network (XML channels) stay off in simulations.
+    private val koin: KoinApplication = koinApplication(createEagerInstances = false) {
         modules(kernelModule(config, model, context))
         modules(extensionModules)
     }
