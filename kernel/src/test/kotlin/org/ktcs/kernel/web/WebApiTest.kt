@@ -96,6 +96,8 @@ class WebApiTest : FunSpec({
             call("POST", "$base/transportOrders/T4", orderOf(destination("Nowhere", "MOVE"))).statusCode() shouldBe 404
             call("GET", "$base/transportOrders/missing").body() shouldBe """["unknown transport order 'missing'"]"""
             call("GET", "$base/vehicles?procState=SLEEPING").statusCode() shouldBe 400
+            call("GET", "$base/transportOrders?intendedVehicle=Ghost").body() shouldBe """["unknown vehicle 'Ghost'"]"""
+            call("GET", "$base/orderSequences?intendedVehicle=Ghost").statusCode() shouldBe 404
             call("PUT", "$base/vehicles/Vehicle-01/paused?newValue=perhaps").statusCode() shouldBe 400
             call("PUT", "$base/paths/No such path/locked?newValue=true".replace(" ", "%20")).statusCode() shouldBe 404
             call("GET", "$base/peripheralJobs").statusCode() shouldBe 404

@@ -16,8 +16,7 @@ import org.ktcs.kernel.web.v1.receiveJson
 /** `/transportOrders`: list, read, create, withdraw, assign now, change the intended vehicle. */
 fun Route.transportOrderRoutes(services: KernelServices) = route("/transportOrders") {
     get {
-        val vehicle = call.request.queryParameters["intendedVehicle"]
-        vehicle?.let { services.vehicles.vehicle(it) ?: throw ObjectUnknownException("unknown vehicle '$it'") }
+        val vehicle = services.knownVehicle(call.request.queryParameters["intendedVehicle"])
         call.respond(services.transportOrders.transportOrders(vehicle).map { it.toDto() })
     }
     post("/dispatcher/trigger") {
@@ -63,8 +62,7 @@ fun Route.transportOrderRoutes(services: KernelServices) = route("/transportOrde
 /** `/orderSequences`: list, read, create, mark complete. */
 fun Route.orderSequenceRoutes(services: KernelServices) = route("/orderSequences") {
     get {
-        val vehicle = call.request.queryParameters["intendedVehicle"]
-        vehicle?.let { services.vehicles.vehicle(it) ?: throw ObjectUnknownException("unknown vehicle '$it'") }
+        val vehicle = services.knownVehicle(call.request.queryParameters["intendedVehicle"])
         call.respond(services.transportOrders.orderSequences(vehicle).map { it.toDto() })
     }
     route("/{NAME}") {
@@ -84,4 +82,10 @@ fun Route.orderSequenceRoutes(services: KernelServices) = route("/orderSequences
             call.respond(HttpStatusCode.OK)
         }
     }
+}
+
+/** [name] if it is `null` or names a vehicle; an unknown vehicle is a 404, as in openTCS's filters. */
+private suspend fun KernelServices.knownVehicle(name: String?): String? {
+    name?.let { vehicles.vehicle(it) ?: throw ObjectUnknownException("unknown vehicle '$it'") }
+    return name
 }
