@@ -103,7 +103,8 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
             )
         }
         env.plant.updateVehicle(vehicle) { it.copy(integrationLevel = level) }
-        controller.occupyPosition(level)
+        // A vehicle on its way keeps what it was granted; its position is settled when its order ends.
+        if (controller.transportOrder == null) controller.occupyPosition(level)
         env.vehicleMayBeAvailable()
     }
 

@@ -78,8 +78,11 @@ class KernelOperationsTest : FunSpec({
         kernel().use { kernel ->
             kernel.run { createTransportOrder(TransportOrderCreation("T", longTrip, intendedVehicle = "Vehicle-03")) }
             kernel.runFor(3_000)
+            val granted = kernel.core.scheduler.allocations().getValue("Vehicle-03")
             kernel.run { withdraw("T", immediate = false, disableVehicle = true) }
             kernel.state("T") shouldBe TransportOrderState.WITHDRAWN
+            // Taking the vehicle out of dispatching must not take away what it is still driving on.
+            kernel.core.scheduler.allocations().getValue("Vehicle-03") shouldBe granted
             kernel.context.runUntil { kernel.state("T").isFinal }
             kernel.state("T") shouldBe TransportOrderState.FAILED
             kernel.core.plant.vehicle("Vehicle-03").integrationLevel.name shouldBe "TO_BE_RESPECTED"
