@@ -15,7 +15,16 @@ import kotlin.time.Duration.Companion.seconds
 
 /** `./ktcs` as the README tells a user to run it. */
 class LauncherTest : FunSpec({
-    val local = arrayOf("--set", "web.bindAddress=127.0.0.1", "--set", "web.port=0")
+    // Any free ports: a test must not depend on the default ports being free on the machine.
+    val local = listOf(
+        "web.bindAddress=127.0.0.1",
+        "web.port=0",
+        "xml.bindAddress=127.0.0.1",
+        "xml.orders.port=0",
+        "xml.status.port=0",
+    )
+        .flatMap { listOf("--set", it) }
+        .toTypedArray()
 
     test("starts with the demo plant, logs one ready line, serves, and exits 0 on SIGTERM") {
         KtcsProcess(*local).use { ktcs ->
