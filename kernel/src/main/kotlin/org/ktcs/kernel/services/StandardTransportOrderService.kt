@@ -8,6 +8,7 @@ import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.api.service.TransportOrderService
 import org.ktcs.kernel.core.KernelCore
+import org.ktcs.kernel.orders.OrderLifecycle
 
 class StandardTransportOrderService(private val kernel: KernelCore) : TransportOrderService {
     override suspend fun createTransportOrder(creation: TransportOrderCreation): TransportOrder =
@@ -22,7 +23,7 @@ class StandardTransportOrderService(private val kernel: KernelCore) : TransportO
     override suspend fun setIntendedVehicle(order: String, vehicle: String?) = kernel.context.call {
         val current = kernel.orders.require(order)
         if (current.state !in
-            setOf(TransportOrderState.RAW, TransportOrderState.ACTIVE, TransportOrderState.DISPATCHABLE)
+            OrderLifecycle.UNASSIGNED
         ) {
             throw IllegalStateChangeException(
                 "transport order '$order' is ${current.state}; its intended vehicle can only change before it is assigned",

@@ -1,6 +1,5 @@
 package org.ktcs.kernel.simulation
 
-import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.Vehicle
 import org.ktcs.api.order.DriveOrder
 import org.ktcs.api.order.Route
@@ -10,8 +9,6 @@ import org.ktcs.api.routing.Router
 /** A router that records how long each route computation takes on the wall clock, in nanoseconds. */
 class TimedRouter(private val router: Router) : Router by router {
     val durationsNanos = ArrayList<Long>()
-
-    override fun updateTopology(model: PlantModel) = router.updateTopology(model)
 
     override fun routeOrder(vehicle: Vehicle, sourcePoint: String, order: TransportOrder): List<DriveOrder>? =
         timed { router.routeOrder(vehicle, sourcePoint, order) }

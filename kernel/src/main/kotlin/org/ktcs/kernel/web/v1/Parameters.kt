@@ -15,6 +15,12 @@ fun ApplicationCall.booleanQuery(name: String, default: Boolean = false): Boolea
         ?: throw InvalidRequestException("query parameter $name must be true or false, was '$raw'")
 }
 
+/** The required boolean query parameter [name]: true or false. */
+fun ApplicationCall.requiredBooleanQuery(name: String): Boolean {
+    requiredQuery(name)
+    return booleanQuery(name)
+}
+
 /** The required query parameter [name]. */
 fun ApplicationCall.requiredQuery(name: String): String =
     request.queryParameters[name] ?: throw InvalidRequestException("query parameter $name is missing")

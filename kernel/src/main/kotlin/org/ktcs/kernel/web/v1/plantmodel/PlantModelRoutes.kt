@@ -9,11 +9,10 @@ import io.ktor.server.routing.put
 import kotlinx.serialization.Serializable
 import org.ktcs.api.error.ObjectUnknownException
 import org.ktcs.api.service.KernelServices
-import org.ktcs.kernel.web.v1.booleanQuery
 import org.ktcs.kernel.web.v1.pathName
 import org.ktcs.kernel.web.v1.receiveJson
 import org.ktcs.kernel.web.v1.required
-import org.ktcs.kernel.web.v1.requiredQuery
+import org.ktcs.kernel.web.v1.requiredBooleanQuery
 
 /** The body of `POST /plantModel/topologyUpdateRequest`: the paths whose routing properties changed. */
 @Serializable
@@ -30,13 +29,11 @@ fun Route.plantModelRoutes(services: KernelServices) {
         call.respond(HttpStatusCode.OK)
     }
     put("/paths/{NAME}/locked") {
-        call.requiredQuery("newValue")
-        services.plantModel.setPathLocked(call.pathName(), call.booleanQuery("newValue"))
+        services.plantModel.setPathLocked(call.pathName(), call.requiredBooleanQuery("newValue"))
         call.respond(HttpStatusCode.OK)
     }
     put("/locations/{NAME}/locked") {
-        call.requiredQuery("newValue")
-        services.plantModel.setLocationLocked(call.pathName(), call.booleanQuery("newValue"))
+        services.plantModel.setLocationLocked(call.pathName(), call.requiredBooleanQuery("newValue"))
         call.respond(HttpStatusCode.OK)
     }
 }

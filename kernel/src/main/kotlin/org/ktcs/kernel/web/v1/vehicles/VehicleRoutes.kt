@@ -15,6 +15,7 @@ import org.ktcs.kernel.web.v1.booleanQuery
 import org.ktcs.kernel.web.v1.parseEnum
 import org.ktcs.kernel.web.v1.pathName
 import org.ktcs.kernel.web.v1.receiveJson
+import org.ktcs.kernel.web.v1.requiredBooleanQuery
 import org.ktcs.kernel.web.v1.requiredQuery
 
 /** `/vehicles`: read vehicles and change what openTCS's web API v1 lets clients change. */
@@ -54,12 +55,7 @@ fun Route.vehicleRoutes(services: KernelServices) = route("/vehicles") {
             call.respond(HttpStatusCode.OK)
         }
         put("/paused") {
-            services.vehicles.setPaused(
-                call.pathName(),
-                call.booleanQuery("newValue").also {
-                    call.requiredQuery("newValue")
-                },
-            )
+            services.vehicles.setPaused(call.pathName(), call.requiredBooleanQuery("newValue"))
             call.respond(HttpStatusCode.OK)
         }
         put("/allowedOrderTypes") {
@@ -120,8 +116,7 @@ private fun Route.commAdapterRoutes(services: KernelServices) = route("/commAdap
         call.respond(HttpStatusCode.OK)
     }
     put("/enabled") {
-        call.requiredQuery("newValue")
-        services.vehicles.setDriverEnabled(call.pathName(), call.booleanQuery("newValue"))
+        services.vehicles.setDriverEnabled(call.pathName(), call.requiredBooleanQuery("newValue"))
         call.respond(HttpStatusCode.OK)
     }
     post("/message") {
