@@ -69,7 +69,7 @@ class KernelApplication(
 
     private fun applicationModule() = module {
         single { KernelVersion.ofThisBuild() }
-        single { WebServer(get(), get(), get(), shutdownRequest) }
+        single { WebServer(get(), get(), get(), shutdownRequest, getAll()) }
     }
 
     private fun moduleOf(extension: KtcsExtension) = try {

@@ -53,6 +53,7 @@ class WebServer(
     private val version: KernelVersion,
     private val services: KernelServices,
     private val shutdown: ShutdownRequest,
+    private val contributions: List<WebContribution> = emptyList(),
 ) {
     private var server: EmbeddedServer<*, *>? = null
 
@@ -65,7 +66,7 @@ class WebServer(
             maxRequestBodyBytes = config[KtcsSettings.webMaxRequestBodySize] * 1024 * 1024,
         )
         val started = embeddedServer(CIO, port = config[KtcsSettings.webPort], host = host) {
-            webModule(version, services, options, shutdown)
+            webModule(version, services, options, shutdown, contributions)
         }
             .start(wait = false)
         server = started
@@ -85,6 +86,7 @@ fun Application.webModule(
     services: KernelServices,
     options: WebOptions = WebOptions(),
     shutdown: ShutdownRequest = ShutdownRequest {},
+    contributions: List<WebContribution> = emptyList(),
 ) {
     install(ContentNegotiation) { json(V1Json.json) }
     installErrorResponses()
@@ -94,6 +96,7 @@ fun Application.webModule(
     val statusEvents = StatusEventBuffer()
     launch { feed(statusEvents, services) }
     routing {
+        contributions.forEach { it.install(this) }
         route("/v1") {
             install(AccessKey) { key = options.accessKey }
             kernelRoutes(version, shutdown)
