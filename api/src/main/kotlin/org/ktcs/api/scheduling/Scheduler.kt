@@ -1,6 +1,7 @@
 package org.ktcs.api.scheduling
 
 import org.ktcs.api.kernel.KernelComponent
+import org.ktcs.api.model.PlantModel
 
 /**
  * Grants vehicles exclusive use of resources (points, paths and locations, named by their unique names), so that
@@ -16,6 +17,12 @@ import org.ktcs.api.kernel.KernelComponent
  * block only while they all enter it in the same direction. A paused vehicle is granted nothing new.
  */
 public interface Scheduler : KernelComponent {
+    /**
+     * The plant model was replaced by [model]. No vehicle is on its way at that moment; forget every claim,
+     * allocation and pending request, and use the blocks of [model] from now on.
+     */
+    public fun updatePlantModel(model: PlantModel)
+
     /** Replaces the client's claim with [resources], one set per step ahead, in driving order. */
     public fun claim(client: SchedulerClient, resources: List<Set<String>>)
 

@@ -15,4 +15,15 @@ public interface PlantModelService {
 
     /** Rebuilds the routing graphs (after path properties or locks changed). */
     public suspend fun updateRoutingTopology()
+
+    /**
+     * Replaces the whole plant with [model], as openTCS's model upload does. Final transport orders and finished
+     * order sequences are dropped; the vehicles of [model] start afresh, with drivers attached and enabled as at
+     * start-up. Clients learn of it through a [org.ktcs.api.event.PlantModelReplacedEvent].
+     *
+     * @throws org.ktcs.api.error.IllegalStateChangeException while a transport order is not final or an order
+     *   sequence is not finished (the message names them).
+     * @throws org.ktcs.api.error.InvalidRequestException if [model] has errors (the message lists them).
+     */
+    public suspend fun replacePlantModel(model: PlantModel)
 }

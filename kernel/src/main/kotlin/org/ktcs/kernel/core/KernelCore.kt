@@ -4,6 +4,7 @@ import org.ktcs.api.dispatching.Dispatcher
 import org.ktcs.api.dispatching.RecoveryEvaluator
 import org.ktcs.api.driver.VehicleDriverFactory
 import org.ktcs.api.error.IllegalStateChangeException
+import org.ktcs.api.error.InvalidRequestException
 import org.ktcs.api.error.ObjectExistsException
 import org.ktcs.api.event.KernelEvent
 import org.ktcs.api.event.NotificationLevel
@@ -24,6 +25,8 @@ import org.ktcs.api.scheduling.Scheduler
 import org.ktcs.kernel.context.KernelContext
 import org.ktcs.kernel.events.EventBus
 import org.ktcs.kernel.events.Notifications
+import org.ktcs.kernel.model.InvalidModelException
+import org.ktcs.kernel.model.PlantModelValidator
 import org.ktcs.kernel.orders.OrderLifecycle
 import org.ktcs.kernel.orders.TransportOrderFactory
 import org.ktcs.kernel.vehicles.VehicleControllers
@@ -211,6 +214,46 @@ class KernelCore(
         trigger.request()
     }
 
+    /**
+     * Replaces the plant with [model] when nothing is under way: no transport order that is not final, no order
+     * sequence that is not finished. Drops final orders and finished sequences, then starts the new vehicles.
+     */
+    fun replacePlantModel(model: PlantModel) {
+        refuseWhileBusy()
+        try {
+            PlantModelValidator.requireValid(model)
+        } catch (error: InvalidModelException) {
+            throw InvalidRequestException(error.message!!.lines().joinToString(" ") { it.trim() })
+        }
+        controllers.discard()
+        orders.removeFinal()
+        sequences.removeFinished()
+        dispatchable.clear()
+        plant.replace(model)
+        router.updateTopology(plant.topology())
+        scheduler.updatePlantModel(plant.topology())
+        controllers.start(options.enableDriversOnStart, options.initialIntegrationLevel)
+        trigger.request()
+    }
+
+    private fun refuseWhileBusy() {
+        val busyOrders = orders.all().filterNot { it.state.isFinal }.map { it.name }
+        val openSequences = sequences.all().filterNot { it.finished }.map { it.name }
+        if (busyOrders.isEmpty() && openSequences.isEmpty()) return
+        val reasons = listOfNotNull(
+            busyOrders.takeIf { it.isNotEmpty() }?.let { "${it.size} transport order(s) not final (${it.sample()})" },
+            openSequences.takeIf {
+                it.isNotEmpty()
+            }?.let { "${it.size} order sequence(s) not finished (${it.sample()})" },
+        )
+        throw IllegalStateChangeException(
+            "the plant model cannot be replaced while orders are being processed: ${reasons.joinToString("; ")}; " +
+                "withdraw them or wait until they are done",
+        )
+    }
+
+    private fun List<String>.sample(): String = take(SAMPLE_SIZE).joinToString() + if (size > SAMPLE_SIZE) ", …" else ""
+
     private fun track(event: KernelEvent) {
         when (event) {
             is TransportOrderEvent -> trackOrder(event)
@@ -242,6 +285,10 @@ class KernelCore(
             plant.updateVehicle(vehicle.name) { it.copy(orderSequence = null) }
         }
         trigger.request()
+    }
+
+    private companion object {
+        const val SAMPLE_SIZE = 5
     }
 
     private fun scheduleSweep() {

@@ -20,14 +20,24 @@ import java.util.TreeSet
  * what it released, oldest first; a request needing several resources may still be overtaken by younger ones that
  * need part of them, so, as in openTCS, starvation is possible.
  */
-class DefaultScheduler(model: PlantModel, clock: KernelClock) : Scheduler {
-    private val blocks = BlockIndex(model)
-    private val occupancy = Occupancy(blocks)
-    private val pending = PendingRequests()
-    private val deliveries = Deliveries(clock)
+class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Scheduler {
+    private var blocks = BlockIndex(model)
+    private var occupancy = Occupancy(blocks)
+    private var pending = PendingRequests()
+    private var deliveries = Deliveries(clock)
     private val claims = LinkedHashMap<String, List<Set<String>>>()
     private val paused = HashSet<String>()
     private var nextSeq = 0L
+
+    override fun updatePlantModel(model: PlantModel) {
+        deliveries.cancelAll()
+        blocks = BlockIndex(model)
+        occupancy = Occupancy(blocks)
+        pending = PendingRequests()
+        deliveries = Deliveries(clock)
+        claims.clear()
+        paused.clear()
+    }
 
     override fun claim(client: SchedulerClient, resources: List<Set<String>>) {
         claims[client.name] = resources.map { it.toSet() }

@@ -29,6 +29,11 @@ internal class Deliveries(private val clock: KernelClock) {
         undelivered.remove(client)?.forEach { it.cancellable?.cancel() }
     }
 
+    /** Drops every unannounced grant. */
+    fun cancelAll() {
+        undelivered.keys.toList().forEach(::cancel)
+    }
+
     private fun remove(client: String, delivery: Delivery): Boolean {
         val deliveries = undelivered[client] ?: return false
         val removed = deliveries.remove(delivery)

@@ -16,6 +16,10 @@ class StandardPlantModelService(private val kernel: KernelCore) : PlantModelServ
         kernel.dispatch()
     }
 
+    override suspend fun replacePlantModel(model: PlantModel) = kernel.context.call {
+        kernel.replacePlantModel(model)
+    }
+
     override suspend fun updateRoutingTopology() = kernel.context.call {
         kernel.router.updateTopology(kernel.plant.topology())
     }

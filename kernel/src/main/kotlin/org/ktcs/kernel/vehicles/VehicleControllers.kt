@@ -49,6 +49,13 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
         controllers.values.forEach { it.driver?.disable() }
     }
 
+    /** Disables every driver and forgets every controller, before the plant model is replaced. */
+    fun discard() {
+        stop()
+        controllers.clear()
+        contexts.clear()
+    }
+
     fun attachment(vehicle: String): DriverAttachment {
         val controller = controller(vehicle)
         return DriverAttachment(

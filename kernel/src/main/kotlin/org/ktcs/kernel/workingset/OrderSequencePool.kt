@@ -40,11 +40,13 @@ class OrderSequencePool(private val events: EventBus, private val clock: KernelC
     }
 
     /** Removes finished sequences that finished before [cutoffMillis] (epoch milliseconds). */
-    fun removeFinishedBefore(cutoffMillis: Long): List<String> {
-        val old = sequences.values.filter {
-            it.finished &&
-                (it.finishedTime?.toEpochMilli() ?: Long.MAX_VALUE) < cutoffMillis
-        }
+    fun removeFinishedBefore(cutoffMillis: Long): List<String> = removeFinished {
+        (it.finishedTime?.toEpochMilli() ?: Long.MAX_VALUE) < cutoffMillis
+    }
+
+    /** Removes every finished sequence that [selected] picks (all of them by default). */
+    fun removeFinished(selected: (OrderSequence) -> Boolean = { true }): List<String> {
+        val old = sequences.values.filter { it.finished && selected(it) }
         old.forEach {
             sequences.remove(it.name)
             events.publish(OrderSequenceEvent(it, null))

@@ -77,11 +77,13 @@ class TransportOrderPool(private val events: EventBus, private val clock: Kernel
     }
 
     /** Removes final orders that finished before [cutoffMillis] (epoch milliseconds); returns their names. */
-    fun removeFinishedBefore(cutoffMillis: Long): List<String> {
-        val old = orders.values.filter {
-            it.state.isFinal &&
-                (it.finishedTime?.toEpochMilli() ?: Long.MAX_VALUE) < cutoffMillis
-        }
+    fun removeFinishedBefore(cutoffMillis: Long): List<String> = removeFinal {
+        (it.finishedTime?.toEpochMilli() ?: Long.MAX_VALUE) < cutoffMillis
+    }
+
+    /** Removes every final order that [selected] picks (all of them by default). */
+    fun removeFinal(selected: (TransportOrder) -> Boolean = { true }): List<String> {
+        val old = orders.values.filter { it.state.isFinal && selected(it) }
         old.forEach { order ->
             orders.remove(order.name)
             events.publish(TransportOrderEvent(order, null))

@@ -176,4 +176,23 @@ class DefaultSchedulerTest : FunSpec({
         f.scheduler.unclaim(v1)
         f.scheduler.claims().shouldBeEmpty()
     }
+
+    test("a new plant model clears allocations, waiting requests, undelivered grants and claims") {
+        val f = SchedulerFixture()
+        val (v1, v2, v3) = listOf("v1", "v2", "v3").map(f::client)
+        f.allocate(v1, "A")
+        f.allocate(v2, "A")
+        f.scheduler.claim(v1, listOf(setOf("B")))
+        f.scheduler.allocate(v3, setOf("C"))
+
+        f.scheduler.updatePlantModel(plant("A-B", "B-C"))
+        f.clock.drain()
+
+        f.scheduler.allocations().shouldBeEmpty()
+        f.scheduler.pendingAllocations().shouldBeEmpty()
+        f.scheduler.claims().shouldBeEmpty()
+        v3.granted.shouldBeEmpty()
+        f.allocate(v3, "A")
+        v3.granted shouldContainExactly listOf(setOf("A"))
+    }
 })

@@ -42,6 +42,11 @@ data class WsEvent(
 @SerialName("missed")
 data class WsMissed(val reason: String, override val v: Int = WS_PROTOCOL_VERSION) : WsServerMessage
 
+/** The plant model was replaced (`PUT /v1/plantModel`); fresh snapshots of the client's topics follow. */
+@Serializable
+@SerialName("modelReplaced")
+data class WsModelReplaced(val name: String, override val v: Int = WS_PROTOCOL_VERSION) : WsServerMessage
+
 /** The client sent something the server does not understand. */
 @Serializable
 @SerialName("error")

@@ -11,6 +11,7 @@ import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
 import kotlinx.serialization.SerializationException
 import org.ktcs.api.event.KernelEvent
+import org.ktcs.api.event.PlantModelReplacedEvent
 import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.events.SubscriberTooSlowException
 import org.ktcs.kernel.web.v1.V1Json
@@ -76,7 +77,13 @@ class WsSession(
             }
             topics.forEach { send(WsSnapshot(it.wireName, WsTopics.snapshot(it, services))) }
             try {
-                for (event in events) forward(event)
+                for (event in events) {
+                    if (event is PlantModelReplacedEvent) {
+                        send(WsModelReplaced(event.model.name))
+                        break
+                    }
+                    forward(event)
+                }
             } catch (error: SubscriberTooSlowException) {
                 send(WsMissed("the client read too slowly; more than $capacity events were waiting"))
             }

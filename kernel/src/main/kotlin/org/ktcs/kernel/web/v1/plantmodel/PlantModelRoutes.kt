@@ -7,7 +7,9 @@ import io.ktor.server.routing.get
 import io.ktor.server.routing.post
 import io.ktor.server.routing.put
 import kotlinx.serialization.Serializable
+import org.ktcs.api.error.InvalidRequestException
 import org.ktcs.api.error.ObjectUnknownException
+import org.ktcs.api.model.PlantModel
 import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.web.v1.pathName
 import org.ktcs.kernel.web.v1.receiveJson
@@ -18,9 +20,20 @@ import org.ktcs.kernel.web.v1.requiredBooleanQuery
 @Serializable
 data class TopologyUpdateRequest(val paths: List<String>? = null)
 
+// The model's own types reject some values (e.g. a negative length) as they are built; those are bad input too.
+private fun PlantModelDto.toCheckedDomain(): PlantModel = try {
+    toDomain()
+} catch (error: IllegalArgumentException) {
+    throw InvalidRequestException("invalid plant model: ${error.message}")
+}
+
 /** The plant model and the locks on paths and locations. */
 fun Route.plantModelRoutes(services: KernelServices) {
     get("/plantModel") { call.respond(services.plantModel.plantModel().toDto()) }
+    put("/plantModel") {
+        services.plantModel.replacePlantModel(call.receiveJson<PlantModelDto>().toCheckedDomain())
+        call.respond(HttpStatusCode.OK)
+    }
     post("/plantModel/topologyUpdateRequest") {
         val paths = call.receiveJson<TopologyUpdateRequest>().paths.required("paths")
         val model = services.plantModel.plantModel()

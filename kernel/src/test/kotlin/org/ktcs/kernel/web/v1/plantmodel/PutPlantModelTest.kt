@@ -1,0 +1,173 @@
+package org.ktcs.kernel.web.v1.plantmodel
+
+import io.kotest.assertions.nondeterministic.eventually
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldBeIn
+import io.kotest.matchers.collections.shouldContainExactly
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
+import kotlinx.serialization.json.Json
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
+import kotlinx.serialization.json.jsonArray
+import kotlinx.serialization.json.jsonObject
+import kotlinx.serialization.json.jsonPrimitive
+import org.koin.core.module.Module
+import org.koin.dsl.bind
+import org.koin.dsl.module
+import org.ktcs.api.driver.VehicleDriverFactory
+import org.ktcs.kernel.app.KernelApplication
+import org.ktcs.kernel.app.PlantModelLoader
+import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.core.StepDriverFactory
+import org.ktcs.kernel.extension.KtcsExtension
+import java.net.URI
+import java.net.http.HttpClient
+import java.net.http.HttpRequest
+import java.net.http.HttpResponse
+import java.net.http.WebSocket
+import java.util.concurrent.CompletionStage
+import java.util.concurrent.LinkedBlockingQueue
+import java.util.concurrent.TimeUnit
+import kotlin.time.Duration.Companion.seconds
+
+/** `PUT /v1/plantModel` on a running kernel: replacing the plant, and every reason to refuse it. */
+class PutPlantModelTest : FunSpec({
+    val testVehicles = object : KtcsExtension {
+        override val name = "step-vehicles"
+
+        override fun module(): Module = module { single { StepDriverFactory() } bind VehicleDriverFactory::class }
+    }
+    val http = HttpClient.newHttpClient()
+    lateinit var application: KernelApplication
+    lateinit var base: String
+
+    beforeEach {
+        val config = ConfigLoader().load(
+            null,
+            emptyMap(),
+            listOf("web.bindAddress=127.0.0.1", "web.port=0", "dispatcher.parkIdleVehicles=false"),
+        )
+        application = KernelApplication(config, PlantModelLoader.loadDemo(), listOf(testVehicles))
+        base = Regex("web API (http://\\S+/v1)").find(application.start())!!.groupValues[1]
+    }
+    afterEach { application.stop() }
+
+    fun call(method: String, path: String, body: String? = null): HttpResponse<String> {
+        val publisher = body?.let(HttpRequest.BodyPublishers::ofString) ?: HttpRequest.BodyPublishers.noBody()
+        val request = HttpRequest.newBuilder(URI(base + path)).method(method, publisher)
+        if (body != null) request.header("Content-Type", "application/json")
+        return http.send(request.build(), HttpResponse.BodyHandlers.ofString())
+    }
+
+    fun model(): JsonObject = Json.parseToJsonElement(call("GET", "/plantModel").body()).jsonObject
+    fun JsonObject.names(field: String) = this[field]!!.jsonArray.map { it.jsonObject["name"]!!.jsonPrimitive.content }
+    fun JsonObject.with(field: String, value: kotlinx.serialization.json.JsonElement) =
+        JsonObject(this + (field to value))
+
+    // The demo plant, renamed and without its last vehicle.
+    fun changedModel(): JsonObject {
+        val current = model()
+        val vehicles = JsonArray(current["vehicles"]!!.jsonArray.dropLast(1))
+        return current.with("name", JsonPrimitive("Hall 2")).with("vehicles", vehicles)
+    }
+
+    val order = """{"destinations":[{"locationName":"Storage 01","operation":"Load cargo"},""" +
+        """{"locationName":"Goods out 01","operation":"Unload cargo"}]}"""
+
+    test("replaces the plant: the new model and its vehicles are served, final orders are gone, orders run again") {
+        call("POST", "/transportOrders/Before", order).statusCode() shouldBe 200
+        call("POST", "/transportOrders/Before/withdrawal?immediate=true").statusCode() shouldBe 200
+
+        call("PUT", "/plantModel", changedModel().toString()).statusCode() shouldBe 200
+
+        val replaced = model()
+        replaced["name"]!!.jsonPrimitive.content shouldBe "Hall 2"
+        replaced.names("vehicles") shouldContainExactly listOf("Vehicle-01", "Vehicle-02", "Vehicle-03")
+        call("GET", "/vehicles/Vehicle-04").statusCode() shouldBe 404
+        call("GET", "/transportOrders/Before").statusCode() shouldBe 404
+        call("POST", "/transportOrders/After", order).statusCode() shouldBe 200
+        eventually(10.seconds) {
+            val after = Json.parseToJsonElement(call("GET", "/transportOrders/After").body()).jsonObject
+            after["processingVehicle"]!!.jsonPrimitive.content shouldBeIn
+                listOf("Vehicle-01", "Vehicle-02", "Vehicle-03")
+        }
+    }
+
+    test("is refused with 409 naming the orders while an order is not final, and the plant stays as it was") {
+        call("PUT", "/vehicles/Vehicle-01/paused?newValue=true")
+        val forPausedVehicle = order.replace("{\"destinations", "{\"intendedVehicle\":\"Vehicle-01\",\"destinations")
+        call("POST", "/transportOrders/Busy", forPausedVehicle).statusCode() shouldBe 200
+
+        val refused = call("PUT", "/plantModel", changedModel().toString())
+
+        refused.statusCode() shouldBe 409
+        refused.body() shouldContain "while orders are being processed: 1 transport order(s) not final (Busy)"
+        model()["name"]!!.jsonPrimitive.content shouldBe "kTCS Demo"
+        model().names("vehicles").size shouldBe 4
+    }
+
+    test("is refused with 400 naming the problems of an invalid model, and the plant stays as it was") {
+        val path = JsonObject(
+            mapOf(
+                "name" to JsonPrimitive("Nowhere"),
+                "srcPointName" to JsonPrimitive("Point-0001"),
+                "destPointName" to JsonPrimitive("Point-9999"),
+            ),
+        )
+        val invalid = changedModel().let { it.with("paths", JsonArray(it["paths"]!!.jsonArray + path)) }
+
+        val refused = call("PUT", "/plantModel", invalid.toString())
+
+        refused.statusCode() shouldBe 400
+        refused.body() shouldContain "Point-9999"
+        model()["name"]!!.jsonPrimitive.content shouldBe "kTCS Demo"
+    }
+
+    test("malformed JSON, a missing name and impossible values are 400 with the reason") {
+        call("PUT", "/plantModel", "{\"name\":").statusCode() shouldBe 400
+        call("PUT", "/plantModel", "{\"points\":[]}").let {
+            it.statusCode() shouldBe 400
+            it.body() shouldContain "name"
+        }
+        val negative = changedModel().let { current ->
+            val paths = current["paths"]!!.jsonArray
+            val first = paths.first().jsonObject.with("length", JsonPrimitive(-5))
+            current.with("paths", JsonArray(listOf(first) + paths.drop(1)))
+        }
+        call("PUT", "/plantModel", negative.toString()).let {
+            it.statusCode() shouldBe 400
+            it.body() shouldContain "length"
+        }
+    }
+
+    test("WebSocket clients are told the model was replaced and get fresh snapshots") {
+        val received = LinkedBlockingQueue<String>()
+        val listener = object : WebSocket.Listener {
+            private val partial = StringBuilder()
+
+            override fun onText(socket: WebSocket, data: CharSequence, last: Boolean): CompletionStage<*>? {
+                partial.append(data)
+                if (last) received.put(partial.toString()).also { partial.clear() }
+                socket.request(1)
+                return null
+            }
+        }
+        val socket = http.newWebSocketBuilder().buildAsync(URI(base.replace("http:", "ws:") + "/ws"), listener).get()
+        fun next() = Json.parseToJsonElement(received.poll(10, TimeUnit.SECONDS)!!).jsonObject
+        fun JsonObject.text(key: String) = this[key]!!.jsonPrimitive.content
+        socket.sendText("""{"type":"subscribe","topics":["vehicles"]}""", true).get()
+        next()["objects"]!!.jsonArray.size shouldBe 4
+
+        call("PUT", "/plantModel", changedModel().toString()).statusCode() shouldBe 200
+
+        val replaced = generateSequence { next() }.first { it.text("type") == "modelReplaced" }
+        replaced.text("name") shouldBe "Hall 2"
+        val snapshot = next()
+        snapshot.text("type") shouldBe "snapshot"
+        snapshot["objects"]!!.jsonArray.map { it.jsonObject.text("name") } shouldContainExactly
+            listOf("Vehicle-01", "Vehicle-02", "Vehicle-03")
+        socket.abort()
+    }
+})
