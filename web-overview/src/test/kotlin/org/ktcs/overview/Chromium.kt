@@ -1,0 +1,81 @@
+package org.ktcs.overview
+
+import com.microsoft.playwright.Browser
+import com.microsoft.playwright.BrowserType
+import com.microsoft.playwright.Page
+import com.microsoft.playwright.Playwright
+import io.kotest.core.test.Enabled
+import io.kotest.core.test.TestCase
+import java.nio.file.Files
+import java.nio.file.Path
+import java.nio.file.Paths
+
+/**
+ * Debian's headless Chromium, driven by Playwright for Java. Where it is missing the browser tests are skipped
+ * with the reason, unless KTCS_REQUIRE_BROWSER=1 (set by CI), where they run and fail.
+ */
+object Chromium {
+    private val executable: Path = Paths.get("/usr/bin/chromium")
+    private val required = System.getenv("KTCS_REQUIRE_BROWSER") == "1"
+
+    private val flags = listOf(
+        "--no-sandbox",
+        "--disable-gpu",
+        "--disable-quic",
+        "--no-first-run",
+        "--disable-background-networking",
+        "--disable-component-update",
+        "--disable-sync",
+    )
+
+    val enabled: (TestCase) -> Enabled = {
+        when {
+            Files.isExecutable(executable) || required -> Enabled.enabled
+
+            else -> Enabled.disabled(
+                "$executable is missing: install Debian's chromium package to run the browser tests",
+            )
+        }
+    }
+
+    /** Starts Playwright and the browser; close both with [Session.close]. */
+    fun start(): Session {
+        check(Files.isExecutable(executable)) {
+            "KTCS_REQUIRE_BROWSER=1 but $executable is missing: install Debian's chromium package"
+        }
+        // PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 and playwright.nodejs.path come from the Surefire configuration.
+        val playwright = Playwright.create()
+        val browser = playwright.chromium().launch(
+            BrowserType.LaunchOptions().setExecutablePath(executable).setHeadless(true).setArgs(flags),
+        )
+        return Session(playwright, browser)
+    }
+
+    class Session(private val playwright: Playwright, val browser: Browser) : AutoCloseable {
+        /** A page of the given size that records every console error and uncaught page error. */
+        fun newPage(width: Int = 1440, height: Int = 860): WatchedPage {
+            val context = browser.newContext(Browser.NewContextOptions().setViewportSize(width, height))
+            return WatchedPage(context.newPage())
+        }
+
+        override fun close() {
+            browser.close()
+            playwright.close()
+        }
+    }
+
+    class WatchedPage(val page: Page) {
+        val errors: MutableList<String> = java.util.Collections.synchronizedList(mutableListOf())
+
+        init {
+            page.onConsoleMessage { if (it.type() == "error") errors += "console: ${it.text()}" }
+            page.onPageError { errors += "page error: $it" }
+        }
+
+        fun screenshot(name: String) {
+            val directory = Paths.get("target", "screenshots")
+            Files.createDirectories(directory)
+            page.screenshot(Page.ScreenshotOptions().setPath(directory.resolve("$name.png")))
+        }
+    }
+}
