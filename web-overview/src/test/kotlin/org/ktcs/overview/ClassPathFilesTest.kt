@@ -19,6 +19,7 @@ class ClassPathFilesTest : FunSpec({
 
     context("refuses paths that leave the directory, directories and unknown file types") {
         withData(
+            nameFn = { "'$it'" },
             "../load-generator/panel.js",
             "./chart.js",
             "/chart.js",

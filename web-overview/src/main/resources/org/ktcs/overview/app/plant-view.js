@@ -302,7 +302,8 @@ export class PlantView {
     ctx.textAlign = 'center';
     ctx.textBaseline = 'top';
     const locationSize = clamp(LOCATION_SIZE_MM * this.view.scale, 8, 30);
-    if (inView.locations.length <= MAX_LABELS) {
+    // Location names crowd each other on a zoomed-out large plant; a small plant always shows them.
+    if (inView.locations.length <= 40 || LOCATION_SIZE_MM * this.view.scale >= 12) {
       for (const location of inView.locations) {
         const p = this.view.toScreen(location.x, location.y);
         ctx.fillText(location.name, p.x, p.y + locationSize / 2 + 3);
