@@ -15,7 +15,8 @@ import java.nio.file.Paths
  * with the reason, unless KTCS_REQUIRE_BROWSER=1 (set by CI), where they run and fail.
  */
 object Chromium {
-    private val executable: Path = Paths.get("/usr/bin/chromium")
+    // -Dktcs.chromium=/elsewhere tries another browser (or shows what happens without one).
+    private val executable: Path = Paths.get(System.getProperty("ktcs.chromium", "/usr/bin/chromium"))
     private val required = System.getenv("KTCS_REQUIRE_BROWSER") == "1"
 
     private val flags = listOf(

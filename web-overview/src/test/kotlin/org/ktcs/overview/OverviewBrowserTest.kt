@@ -123,6 +123,7 @@ class OverviewBrowserTest : FunSpec({
         page().locator("#details [data-action=unlock]").click()
         assertThat(page().locator("#toasts")).containsText("Unlock path $name: done")
         locked().jsonObject["locked"]!!.jsonPrimitive.boolean shouldBe false
+        page().locator("#details .close").click()
     }
 
     browserTest("the load generator panel creates orders between the chosen locations") {

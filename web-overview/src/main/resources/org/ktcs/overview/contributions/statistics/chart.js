@@ -9,7 +9,7 @@ function node(name, attributes = {}, text) {
   return element;
 }
 
-/** Vertical bars: values [{label, value}], the tallest bar is full height. */
+/** Vertical bars: values [{label, value, title?}], the tallest bar is full height. */
 export function barChart(values, { width = 420, height = 120, colour = '#1565c0', unit = '' } = {}) {
   const svg = node('svg', { width, height: height + 30, viewBox: `0 0 ${width} ${height + 30}`, role: 'img' });
   const max = Math.max(1, ...values.map((v) => v.value));
@@ -17,7 +17,7 @@ export function barChart(values, { width = 420, height = 120, colour = '#1565c0'
   values.forEach((v, i) => {
     const barHeight = (v.value / max) * height;
     const bar = node('rect', { x: i * slot + 2, y: height - barHeight + 12, width: Math.max(1, slot - 4), height: barHeight, fill: colour });
-    bar.append(node('title', {}, `${v.label}: ${v.value}${unit}`));
+    bar.append(node('title', {}, `${v.title ?? v.label}: ${v.value}${unit}`));
     svg.append(bar);
     if (v.value > 0) svg.append(node('text', { x: i * slot + slot / 2, y: height - barHeight + 10, 'text-anchor': 'middle', 'font-size': 10 }, String(v.value)));
     if (values.length <= 20 || i % Math.ceil(values.length / 10) === 0) {

@@ -39,8 +39,8 @@ export default {
         `open: ${orders.size - finished.length - failed} · mean duration: ${average.toFixed(1)} s`;
       part('per-minute').replaceChildren(barChart(perMinute(finished)));
       const recent = finished.sort((a, b) => Date.parse(a.finishedTime) - Date.parse(b.finishedTime)).slice(-DURATIONS_SHOWN);
-      part('durations').replaceChildren(barChart(recent.map((o) => ({
-        label: o.name.slice(-4), value: Math.round((Date.parse(o.finishedTime) - Date.parse(o.creationTime)) / 100) / 10,
+      part('durations').replaceChildren(barChart(recent.map((o, i) => ({
+        label: String(i + 1), title: o.name, value: Math.round((Date.parse(o.finishedTime) - Date.parse(o.creationTime)) / 100) / 10,
       })), { colour: '#6a1b9a', unit: ' s' }));
       part('activity').replaceChildren(stackedBars([...activity.entries()].sort(([a], [b]) => a.localeCompare(b))
         .map(([label, parts]) => ({ label, parts })), ACTIVITY_COLOURS));
