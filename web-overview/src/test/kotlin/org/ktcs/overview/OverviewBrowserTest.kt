@@ -55,7 +55,7 @@ class OverviewBrowserTest : FunSpec({
         ktcs?.close()
     }
 
-    browserTest("the plant shows as many points, paths and locations as the model has") {
+    browserTest("the plant shows as many points, paths and locations as the model has; layers hide them") {
         val model = model()
         page().waitForFunction("() => window.ktcsOverview.drawn().vehicles > 0")
         val counts = drawn()
@@ -65,6 +65,10 @@ class OverviewBrowserTest : FunSpec({
         assertThat(page().locator("#plant-summary")).containsText("${model["points"]!!.jsonArray.size} points")
         assertThat(page().locator("#connection")).hasText("live")
         watched.screenshot("plant")
+        page().locator("[data-layer='0']").uncheck()
+        page().waitForFunction("() => window.ktcsOverview.drawn().points === 0")
+        page().locator("[data-layer='0']").check()
+        page().waitForFunction("n => window.ktcsOverview.drawn().points === n", model["points"]!!.jsonArray.size)
     }
 
     browserTest("a vehicle's drawn position changes while it drives") {

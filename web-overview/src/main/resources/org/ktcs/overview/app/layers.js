@@ -4,15 +4,13 @@ import { el, fill } from './dom.js';
 
 export function installLayerToggles(container, model, plant) {
   const layers = [...(model.visualLayout?.layers ?? [])].sort((a, b) => a.ordinal - b.ordinal);
-  if (layers.length <= 1 && !layers.some((layer) => !layer.visible)) {
-    fill(container);
-    layers.forEach((layer) => plant.setLayerVisible(layer.id, layer.visible));
-    return;
-  }
-  fill(container, 'Layers:', layers.map((layer) => {
-    plant.setLayerVisible(layer.id, layer.visible);
-    return el('label', {}, el('input', {
-      type: 'checkbox', checked: layer.visible, onchange: (event) => plant.setLayerVisible(layer.id, event.target.checked),
+  const groups = new Map((model.visualLayout?.layerGroups ?? []).map((group) => [group.id, group]));
+  fill(container, layers.length > 0 ? 'Layers:' : null, layers.map((layer) => {
+    const visible = layer.visible && (groups.get(layer.groupId)?.visible ?? true);
+    plant.setLayerVisible(layer.id, visible);
+    return el('label', { title: `Layer group: ${groups.get(layer.groupId)?.name ?? '—'}` }, el('input', {
+      type: 'checkbox', checked: visible, 'data-layer': layer.id,
+      onchange: (event) => plant.setLayerVisible(layer.id, event.target.checked),
     }), ` ${layer.name}`);
   }));
 }

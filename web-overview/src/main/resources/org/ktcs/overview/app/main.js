@@ -12,6 +12,7 @@ import { Details } from './details.js';
 import { OrderDialog } from './order-dialog.js';
 import { mountPanels } from './panels.js';
 import { installLayerToggles, summaryOf } from './layers.js';
+import { throttle } from './throttle.js';
 
 const toasts = document.getElementById('toasts');
 
@@ -86,6 +87,7 @@ async function start() {
     onSelect: (selection) => details.show(selection),
   });
   details.plant = plant;
+  const refreshDetails = throttle(() => details.refresh(), 250);
   const tabs = new Tabs(document.getElementById('tabs'), document.getElementById('tab-bodies'));
   const dialog = new OrderDialog(document.getElementById('order-dialog'), { ktcs, client });
   new VehiclesView(tabs.add('vehicles', 'Vehicles'), { client, details });
@@ -105,14 +107,17 @@ async function start() {
       installLayerToggles(document.getElementById('layers'), model, plant);
     } else if (message.type === 'event') {
       plant.updateElement(message.current);
-      details.refresh();
+      refreshDetails();
     }
   });
   client.subscribe('vehicles', () => {
     plant.vehicles.setVehicles(client.objects('vehicles'));
-    details.refresh();
+    refreshDetails();
   });
-  client.subscribe('transportOrders', () => plant.vehicles.setOrders(client.state.get('transportOrders') ?? new Map()));
+  client.subscribe('transportOrders', () => {
+    plant.vehicles.setOrders(client.state.get('transportOrders') ?? new Map());
+    refreshDetails();
+  });
   client.connect();
   exposeForDiagnostics(plant, client);
 }
