@@ -3,6 +3,7 @@ package org.ktcs.overview
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldMatch
 import org.ktcs.kernel.app.LoadedModel
 import org.ktcs.kernel.simulation.Fleet
 import org.ktcs.kernel.simulation.GridPlant
@@ -30,6 +31,9 @@ class GridDrawingBenchmarkTest : FunSpec({
                 (drawn["points"] as Number).toInt() shouldBe model.points.size
                 (drawn["paths"] as Number).toInt() shouldBe model.paths.size
                 watched.screenshot("grid-100x100-high-contrast")
+                val style = page.evaluate("() => window.ktcsOverview.vehicleStyle('Vehicle-001')") as Map<*, *>
+                style["label"].toString() shouldMatch Regex("""Vehicle-001 \d+%""")
+                style["stroke"] shouldBe "#000000"
                 @Suppress("UNCHECKED_CAST")
                 val times = (page.evaluate("() => window.ktcsOverview.benchmark(40)") as List<Number>)
                     .map { it.toDouble() }.sorted()

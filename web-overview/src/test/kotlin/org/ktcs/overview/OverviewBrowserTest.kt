@@ -65,6 +65,8 @@ class OverviewBrowserTest : FunSpec({
         (counts["locations"] as Number).toInt() shouldBe model["locations"]!!.jsonArray.size
         assertThat(page().locator("#plant-summary")).containsText("${model["points"]!!.jsonArray.size} points")
         assertThat(page().locator("#connection")).hasText("live")
+        (page().evaluate("() => window.ktcsOverview.vehicleStyle('Vehicle-01')") as Map<*, *>)["label"] shouldBe
+            "Vehicle-01"
         watched.screenshot("plant")
         page().locator("[data-layer='0']").uncheck()
         page().waitForFunction("() => window.ktcsOverview.drawn().points === 0")

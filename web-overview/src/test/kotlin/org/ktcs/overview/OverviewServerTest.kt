@@ -78,6 +78,10 @@ class OverviewServerTest : FunSpec({
         socket.abort()
     }
 
+    test("the key as a query parameter opens only the WebSocket, not REST") {
+        ktcs.get("/v1/vehicles?accessKey=secret").statusCode() shouldBe 403
+    }
+
     test("an unknown theme name stops the start with a message listing the known themes") {
         val config = ConfigLoader().load(null, emptyMap(), listOf("overview.vehicleTheme=neon"))
         val contributions = Contributions(BuiltInContributions.all(javaClass.classLoader))

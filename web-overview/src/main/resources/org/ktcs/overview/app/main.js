@@ -119,7 +119,7 @@ async function start() {
     refreshDetails();
   });
   client.connect();
-  exposeForDiagnostics(plant, client);
+  exposeForDiagnostics(plant, client, themes);
 }
 
 function installPlantControls(plant) {
@@ -130,11 +130,16 @@ function installPlantControls(plant) {
 }
 
 // What the browser tests and the drawing benchmark read; also handy in the browser's console.
-function exposeForDiagnostics(plant, client) {
+function exposeForDiagnostics(plant, client, themes) {
   window.ktcsOverview = {
     drawn: () => ({ ...plant.lastDrawn, vehicles: plant.vehicles.drawn.size }),
     pagePositionOf: (kind, name) => plant.pagePositionOf(kind, name),
     connected: () => client.connected,
+    /** The style the configured vehicle theme gives a vehicle now. */
+    vehicleStyle: (name) => {
+      const vehicle = client.state.get('vehicles')?.get(name);
+      return vehicle ? themes.vehicleStyle(vehicle) : null;
+    },
     /** Closes the WebSocket as a network failure would; the client reconnects by itself. */
     dropConnection: () => client.socket?.close(),
     /** Draws frames of the static plant at changing zoom levels and answers the draw times in ms. */
