@@ -88,9 +88,14 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
 
         is IllegalArgumentException -> error.message
 
-        // Koin wraps an extension's failure to bind its port when it creates the extension.
-        else -> generateSequence(error.cause) { it.cause }.firstOrNull { it is java.net.BindException }
-            ?.let { "cannot listen on the configured address: ${it.message}" }
+        // Koin wraps what goes wrong while it creates an extension (a port in use, a bad extension setting).
+        else -> generateSequence(error.cause) { it.cause }.firstNotNullOfOrNull { cause ->
+            when (cause) {
+                is java.net.BindException -> "cannot listen on the configured address: ${cause.message}"
+                is ConfigException, is ExtensionException -> cause.message
+                else -> null
+            }
+        }
     }
 
     companion object {

@@ -237,6 +237,18 @@ object KtcsSettings {
         0L..60_000L,
         "Simulated milliseconds between precise-position reports while driving (0: only at points).",
     )
+    val overviewVehicleTheme = stringSetting(
+        "overview.vehicleTheme",
+        "default-vehicles",
+        "Name of the theme the browser overview draws vehicles with (default-vehicles, high-contrast-vehicles, or " +
+            "one an extension adds).",
+    )
+    val overviewLocationTheme = stringSetting(
+        "overview.locationTheme",
+        "default-locations",
+        "Name of the theme the browser overview draws locations with (default-locations, high-contrast-locations, " +
+            "or one an extension adds).",
+    )
 
     val all: List<Setting<*>> = listOf(
         webBindAddress,
@@ -279,6 +291,8 @@ object KtcsSettings {
         loopbackRechargeRate,
         loopbackEnergyDrain,
         loopbackPositionReportInterval,
+        overviewVehicleTheme,
+        overviewLocationTheme,
     )
 }
 

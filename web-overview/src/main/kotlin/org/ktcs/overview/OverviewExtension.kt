@@ -1,0 +1,33 @@
+package org.ktcs.overview
+
+import org.koin.core.qualifier.named
+import org.koin.dsl.module
+import org.ktcs.api.overview.OverviewContribution
+import org.ktcs.kernel.config.KtcsConfig
+import org.ktcs.kernel.config.KtcsSettings
+import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.kernel.web.WebContribution
+
+/**
+ * The browser plant overview as a kTCS extension: it serves the page at `/`, lists every [OverviewContribution] of
+ * every extension at `/overview/extensions.json` and serves their files. Its own panels and themes are contributions
+ * like anybody else's.
+ */
+class OverviewExtension : KtcsExtension {
+    override val name: String = "web-overview"
+
+    override fun module() = module {
+        BuiltInContributions.all(OverviewExtension::class.java.classLoader).forEach { contribution ->
+            single<OverviewContribution>(named("overview-${contribution.name}")) { contribution }
+        }
+        single<WebContribution>(named("web-overview")) {
+            val config = getOrNull<KtcsConfig>() ?: KtcsConfig.defaults()
+            val contributions = Contributions(getAll())
+            OverviewRoutes(
+                contributions,
+                ThemeSelection.from(config, contributions),
+                accessKeyRequired = config[KtcsSettings.webAccessKey].isNotEmpty(),
+            )
+        }
+    }
+}

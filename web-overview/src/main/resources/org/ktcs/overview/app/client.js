@@ -1,0 +1,165 @@
+// The page's only way to the kernel: the public web API (REST v1) and its WebSocket, like any other client.
+
+const TOPICS = ['vehicles', 'transportOrders', 'orderSequences', 'plantModel', 'notifications'];
+const RECONNECT_DELAYS_MS = [500, 1000, 2000, 5000];
+
+/** An API error: the message joins the API's error array. */
+export class ApiError extends Error {
+  constructor(status, messages) {
+    super(messages.join('; ') || `HTTP ${status}`);
+    this.status = status;
+  }
+}
+
+/**
+ * Keeps one WebSocket to /v1/ws open, subscribed to every topic, and the latest state of each topic. After a lost
+ * connection it reconnects by itself; the server then sends fresh snapshots, so listeners resynchronise.
+ */
+export class KtcsClient {
+  constructor({ accessKey = '' } = {}) {
+    this.accessKey = accessKey;
+    this.listeners = new Map(TOPICS.map((topic) => [topic, new Set()]));
+    this.state = new Map();
+    this.connectionListeners = new Set();
+    this.connected = false;
+    this.attempt = 0;
+    this.socket = null;
+  }
+
+  /** Calls REST v1; resolves with the parsed JSON (or null), rejects with an ApiError naming the problem. */
+  async api(method, path, body) {
+    const headers = {};
+    if (body !== undefined) headers['Content-Type'] = 'application/json';
+    if (this.accessKey) headers['X-Api-Access-Key'] = this.accessKey;
+    let response;
+    try {
+      response = await fetch(`/v1${path}`, {
+        method, headers, body: body === undefined ? undefined : JSON.stringify(body),
+      });
+    } catch (error) {
+      throw new ApiError(0, [`kTCS is not reachable (${error.message})`]);
+    }
+    const text = await response.text();
+    const parsed = text ? parseJson(text) : null;
+    if (!response.ok) {
+      const messages = Array.isArray(parsed) ? parsed.map(String) : [text || response.statusText];
+      throw new ApiError(response.status, messages.map((m) => `${m} (HTTP ${response.status})`));
+    }
+    return parsed;
+  }
+
+  /** Calls listener with each message of topic; a late subscriber first gets the current state as a snapshot. */
+  subscribe(topic, listener) {
+    const listeners = this.listeners.get(topic);
+    if (!listeners) throw new Error(`unknown topic '${topic}'; known: ${TOPICS.join(', ')}`);
+    listeners.add(listener);
+    if (this.state.has(topic)) {
+      listener({ v: 1, type: 'snapshot', topic, objects: this.objects(topic) });
+    }
+    return () => listeners.delete(listener);
+  }
+
+  /** The current objects of a topic, as the last snapshot and the events since made them. */
+  objects(topic) {
+    const state = this.state.get(topic);
+    if (!state) return [];
+    return Array.isArray(state) ? [...state] : [...state.values()];
+  }
+
+  onConnectionChange(listener) {
+    this.connectionListeners.add(listener);
+    listener(this.connected);
+  }
+
+  connect() {
+    const scheme = location.protocol === 'https:' ? 'wss' : 'ws';
+    const query = this.accessKey ? `?accessKey=${encodeURIComponent(this.accessKey)}` : '';
+    const socket = new WebSocket(`${scheme}://${location.host}/v1/ws${query}`);
+    this.socket = socket;
+    socket.onopen = () => {
+      this.attempt = 0;
+      socket.send(JSON.stringify({ type: 'subscribe', topics: TOPICS }));
+      this.setConnected(true);
+    };
+    socket.onmessage = (message) => this.receive(parseJson(message.data));
+    socket.onclose = () => {
+      if (this.socket !== socket) return;
+      this.setConnected(false);
+      const delay = RECONNECT_DELAYS_MS[Math.min(this.attempt, RECONNECT_DELAYS_MS.length - 1)];
+      this.attempt += 1;
+      setTimeout(() => this.connect(), delay);
+    };
+  }
+
+  setConnected(connected) {
+    this.connected = connected;
+    this.connectionListeners.forEach((listener) => listener(connected));
+  }
+
+  receive(message) {
+    if (!message || !message.type) return;
+    if (message.type === 'snapshot') this.applySnapshot(message);
+    else if (message.type === 'event') this.applyEvent(message);
+    else if (message.type === 'error') console.warn(`kTCS WebSocket: ${message.message}`);
+    // "missed" needs nothing here: fresh snapshots of every topic follow it.
+    const listeners = this.listeners.get(message.topic);
+    if (!listeners) return;
+    for (const listener of listeners) {
+      try {
+        listener(message);
+      } catch (error) {
+        reportListenerError(error);
+      }
+    }
+  }
+
+  applySnapshot({ topic, objects }) {
+    if (topic === 'notifications') this.state.set(topic, [...objects]);
+    else this.state.set(topic, new Map(objects.map((object) => [object.name, object])));
+  }
+
+  applyEvent({ topic, previous, current }) {
+    const state = this.state.get(topic);
+    if (!state) return;
+    if (topic === 'notifications') {
+      state.push(current);
+      if (state.length > 1000) state.shift();
+    } else if (topic === 'plantModel') {
+      applyPlantModelChange(state, current);
+    } else if (current === null) {
+      state.delete(previous.name);
+    } else {
+      state.set(current.name, current);
+    }
+  }
+}
+
+// Path and location events change the single plant model object in place, so model() stays current.
+function applyPlantModelChange(state, changed) {
+  const model = [...state.values()][0];
+  if (!model || !changed) return;
+  for (const list of [model.paths, model.locations]) {
+    const index = list.findIndex((element) => element.name === changed.name);
+    if (index >= 0 && isSameKind(list[index], changed)) {
+      list[index] = changed;
+      return;
+    }
+  }
+}
+
+function isSameKind(a, b) {
+  return ('srcPointName' in a) === ('srcPointName' in b);
+}
+
+function parseJson(text) {
+  try {
+    return JSON.parse(text);
+  } catch {
+    return null;
+  }
+}
+
+function reportListenerError(error) {
+  // A broken panel must not stop the overview; the page's error handler shows it to the operator.
+  setTimeout(() => { throw error; });
+}

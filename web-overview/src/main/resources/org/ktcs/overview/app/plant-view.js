@@ -1,0 +1,518 @@
+// Draws the plant on two stacked canvases: the static plant (redrawn when the view or the model changes) and a
+// live overlay (vehicles, routes, resources, selection; redrawn while something moves). Only what lies in view is
+// drawn, found through the geometry's grid index, so a plant of 10,000 points stays smooth.
+
+import { buildGeometry, distanceToLine, midpointOf } from './geometry.js';
+import { ViewTransform } from './view-transform.js';
+import { VehicleLayer } from './vehicle-layer.js';
+
+const COLOURS = {
+  background: '#f6f7f9',
+  path: '#7d8a9a',
+  locked: '#d0342c',
+  arrow: '#56606d',
+  link: '#9aa5b1',
+  halt: '#4a5968',
+  park: '#1f78b4',
+  label: '#222a33',
+  selection: '#ff9800',
+};
+const ARROW_MIN_SCREEN_LENGTH = 28;
+const MAX_LABELS = 600;
+const LOCATION_SIZE_MM = 1200;
+const POINT_SIZE_MM = 450;
+
+export class PlantView {
+  constructor(canvas, { themes, onSelect }) {
+    this.canvas = canvas;
+    this.overlay = document.createElement('canvas');
+    this.overlay.className = 'plant-overlay';
+    canvas.after(this.overlay);
+    this.themes = themes;
+    this.onSelect = onSelect;
+    this.view = new ViewTransform();
+    this.geometry = null;
+    this.hiddenLayers = new Set();
+    this.showLabels = true;
+    this.selection = null;
+    this.highlightedRoute = [];
+    this.lastDrawn = { points: 0, paths: 0, locations: 0, staticMs: 0 };
+    this.vehicles = new VehicleLayer(this);
+    this.staticDirty = true;
+    this.frameRequested = false;
+    this.installInteraction();
+    new ResizeObserver(() => this.resize()).observe(canvas.parentElement);
+    this.resize();
+  }
+
+  setModel(model) {
+    const first = this.geometry === null;
+    this.geometry = buildGeometry(model);
+    this.vehicles.setGeometry(this.geometry);
+    if (first) this.fit();
+    this.invalidate();
+  }
+
+  /** A path or location changed (a lock); the rest of the model stays. */
+  updateElement(changed) {
+    const geometry = this.geometry;
+    if (!geometry || !changed) return;
+    const element = geometry.pathsByName.get(changed.name) ?? geometry.locationsByName.get(changed.name);
+    if (!element) return;
+    element.locked = changed.locked;
+    if (element.kind === 'location') element.dto = changed;
+    this.invalidate();
+  }
+
+  fit() {
+    if (!this.geometry) return;
+    this.view.fit(this.geometry.bounds, this.width, this.height);
+    this.invalidate();
+  }
+
+  zoom(factor) {
+    this.view.zoomAt(factor, this.width / 2, this.height / 2);
+    this.invalidate();
+  }
+
+  setLayerVisible(layerId, visible) {
+    if (visible) this.hiddenLayers.delete(layerId);
+    else this.hiddenLayers.add(layerId);
+    this.invalidate();
+  }
+
+  setLabels(show) {
+    this.showLabels = show;
+    this.invalidate();
+  }
+
+  /** Marks an element (or null) as selected. */
+  select(selection) {
+    this.selection = selection;
+    this.requestFrame();
+  }
+
+  /** Highlights a route: a list of path names (e.g. of a selected order). */
+  highlightRoute(pathNames) {
+    this.highlightedRoute = pathNames;
+    this.requestFrame();
+  }
+
+  invalidate() {
+    this.staticDirty = true;
+    this.requestFrame();
+  }
+
+  requestFrame() {
+    if (this.frameRequested) return;
+    this.frameRequested = true;
+    requestAnimationFrame((now) => {
+      this.frameRequested = false;
+      this.drawFrame(now);
+    });
+  }
+
+  drawFrame(now) {
+    if (this.staticDirty) {
+      this.drawStatic();
+      this.staticDirty = false;
+    }
+    const moving = this.drawOverlay(now);
+    if (moving) this.requestFrame();
+  }
+
+  resize() {
+    const box = this.canvas.parentElement.getBoundingClientRect();
+    const ratio = window.devicePixelRatio || 1;
+    this.width = Math.max(1, box.width);
+    this.height = Math.max(1, box.height);
+    for (const canvas of [this.canvas, this.overlay]) {
+      canvas.width = Math.round(this.width * ratio);
+      canvas.height = Math.round(this.height * ratio);
+      canvas.style.width = `${this.width}px`;
+      canvas.style.height = `${this.height}px`;
+      canvas.getContext('2d').setTransform(ratio, 0, 0, ratio, 0, 0);
+    }
+    if (this.geometry && !this.userMoved) this.view.fit(this.geometry.bounds, this.width, this.height);
+    this.invalidate();
+  }
+
+  isVisible(element) {
+    return !this.hiddenLayers.has(element.layerId);
+  }
+
+  /** What lies in the canvas (plus a margin), on visible layers. */
+  elementsInView() {
+    const margin = 40 / this.view.scale;
+    const rect = this.view.visibleRect(this.width, this.height);
+    const padded = { minX: rect.minX - margin, maxX: rect.maxX + margin, minY: rect.minY - margin, maxY: rect.maxY + margin };
+    const found = { points: [], paths: [], locations: [] };
+    for (const element of this.geometry.index.query(padded)) {
+      if (!this.isVisible(element) || !intersects(element, padded)) continue;
+      found[`${element.kind}s`].push(element);
+    }
+    return found;
+  }
+
+  drawStatic() {
+    const started = performance.now();
+    const ctx = this.canvas.getContext('2d');
+    ctx.fillStyle = COLOURS.background;
+    ctx.fillRect(0, 0, this.width, this.height);
+    if (!this.geometry) return;
+    const inView = this.elementsInView();
+    this.drawBlocks(ctx, inView);
+    this.drawPaths(ctx, inView.paths);
+    this.drawLinks(ctx, inView.locations);
+    this.drawPoints(ctx, inView.points);
+    this.drawLocations(ctx, inView.locations);
+    if (this.showLabels) this.drawLabels(ctx, inView);
+    this.lastDrawn = {
+      points: inView.points.length,
+      paths: inView.paths.length,
+      locations: inView.locations.length,
+      staticMs: performance.now() - started,
+    };
+  }
+
+  drawBlocks(ctx, inView) {
+    const byColour = new Map();
+    for (const element of [...inView.paths, ...inView.points]) {
+      const colour = this.geometry.blockColours.get(element.name);
+      if (!colour) continue;
+      if (!byColour.has(colour)) byColour.set(colour, []);
+      byColour.get(colour).push(element);
+    }
+    ctx.save();
+    ctx.globalAlpha = 0.28;
+    ctx.lineCap = 'round';
+    for (const [colour, elements] of byColour) {
+      ctx.strokeStyle = colour;
+      ctx.fillStyle = colour;
+      ctx.lineWidth = 9;
+      ctx.beginPath();
+      for (const element of elements) {
+        if (element.kind === 'path') this.tracePath(ctx, element);
+      }
+      ctx.stroke();
+      ctx.beginPath();
+      for (const element of elements) {
+        if (element.kind !== 'point') continue;
+        const p = this.view.toScreen(element.x, element.y);
+        ctx.moveTo(p.x + 8, p.y);
+        ctx.arc(p.x, p.y, 8, 0, 2 * Math.PI);
+      }
+      ctx.fill();
+    }
+    ctx.restore();
+  }
+
+  tracePath(ctx, path) {
+    const first = this.view.toScreen(path.line[0].x, path.line[0].y);
+    ctx.moveTo(first.x, first.y);
+    for (let i = 1; i < path.line.length; i += 1) {
+      const p = this.view.toScreen(path.line[i].x, path.line[i].y);
+      ctx.lineTo(p.x, p.y);
+    }
+  }
+
+  drawPaths(ctx, paths) {
+    ctx.lineWidth = 1.5;
+    ctx.strokeStyle = COLOURS.path;
+    ctx.beginPath();
+    paths.filter((p) => !p.locked).forEach((p) => this.tracePath(ctx, p));
+    ctx.stroke();
+    ctx.save();
+    ctx.strokeStyle = COLOURS.locked;
+    ctx.lineWidth = 2.5;
+    ctx.setLineDash([6, 4]);
+    ctx.beginPath();
+    paths.filter((p) => p.locked).forEach((p) => this.tracePath(ctx, p));
+    ctx.stroke();
+    ctx.restore();
+    this.drawArrows(ctx, paths);
+  }
+
+  drawArrows(ctx, paths) {
+    ctx.fillStyle = COLOURS.arrow;
+    ctx.beginPath();
+    for (const path of paths) {
+      const a = this.view.toScreen(path.src.x, path.src.y);
+      const b = this.view.toScreen(path.dst.x, path.dst.y);
+      if (Math.hypot(b.x - a.x, b.y - a.y) < ARROW_MIN_SCREEN_LENGTH) continue;
+      const middle = midpointOf(path);
+      const m = this.view.toScreen(middle.x, middle.y);
+      const angle = -middle.angle;
+      if (path.forward) traceArrow(ctx, m.x, m.y, angle);
+      if (path.reverse) traceArrow(ctx, m.x, m.y, angle + Math.PI);
+    }
+    ctx.fill();
+  }
+
+  drawLinks(ctx, locations) {
+    ctx.save();
+    ctx.strokeStyle = COLOURS.link;
+    ctx.lineWidth = 1;
+    ctx.setLineDash([3, 3]);
+    ctx.beginPath();
+    for (const location of locations) {
+      const from = this.view.toScreen(location.x, location.y);
+      for (const point of location.links) {
+        const to = this.view.toScreen(point.x, point.y);
+        ctx.moveTo(from.x, from.y);
+        ctx.lineTo(to.x, to.y);
+      }
+    }
+    ctx.stroke();
+    ctx.restore();
+  }
+
+  drawPoints(ctx, points) {
+    const size = clamp(POINT_SIZE_MM * this.view.scale, 2.5, 12);
+    for (const [type, colour] of [['HALT_POSITION', COLOURS.halt], ['PARK_POSITION', COLOURS.park]]) {
+      ctx.fillStyle = colour;
+      ctx.beginPath();
+      for (const point of points) {
+        if ((point.type === 'PARK_POSITION') !== (type === 'PARK_POSITION')) continue;
+        const p = this.view.toScreen(point.x, point.y);
+        if (type === 'PARK_POSITION') {
+          ctx.moveTo(p.x + size * 0.7, p.y);
+          ctx.arc(p.x, p.y, size * 0.7, 0, 2 * Math.PI);
+        } else {
+          ctx.rect(p.x - size / 2, p.y - size / 2, size, size);
+        }
+      }
+      ctx.fill();
+    }
+  }
+
+  drawLocations(ctx, locations) {
+    const size = clamp(LOCATION_SIZE_MM * this.view.scale, 8, 30);
+    for (const location of locations) {
+      const style = this.themes.locationStyle(location.dto, this.geometry.locationTypes.get(location.typeName));
+      const p = this.view.toScreen(location.x, location.y);
+      drawSymbol(ctx, style, p.x, p.y, size);
+      if (location.locked) drawCross(ctx, p.x, p.y, size * 0.7);
+    }
+  }
+
+  drawLabels(ctx, inView) {
+    ctx.font = '11px system-ui, sans-serif';
+    ctx.fillStyle = COLOURS.label;
+    ctx.textAlign = 'center';
+    ctx.textBaseline = 'top';
+    const locationSize = clamp(LOCATION_SIZE_MM * this.view.scale, 8, 30);
+    // Location names crowd each other on a zoomed-out large plant; a small plant always shows them.
+    if (inView.locations.length <= 40 || LOCATION_SIZE_MM * this.view.scale >= 12) {
+      for (const location of inView.locations) {
+        const p = this.view.toScreen(location.x, location.y);
+        ctx.fillText(location.name, p.x, p.y + locationSize / 2 + 3);
+      }
+    }
+    // Point names only once they no longer crowd each other.
+    if (inView.points.length <= MAX_LABELS && this.view.scale * 1500 > 40) {
+      ctx.fillStyle = '#5f6b78';
+      ctx.font = '10px system-ui, sans-serif';
+      for (const point of inView.points) {
+        const p = this.view.toScreen(point.x, point.y);
+        ctx.fillText(point.name, p.x, p.y + 7);
+      }
+    }
+  }
+
+  drawOverlay(now) {
+    const ctx = this.overlay.getContext('2d');
+    ctx.clearRect(0, 0, this.width, this.height);
+    if (!this.geometry) return false;
+    this.drawHighlightedRoute(ctx);
+    const moving = this.vehicles.draw(ctx, now);
+    this.drawSelection(ctx);
+    return moving;
+  }
+
+  drawHighlightedRoute(ctx) {
+    if (this.highlightedRoute.length === 0) return;
+    ctx.save();
+    ctx.strokeStyle = COLOURS.selection;
+    ctx.globalAlpha = 0.7;
+    ctx.lineWidth = 7;
+    ctx.lineCap = 'round';
+    ctx.beginPath();
+    for (const name of this.highlightedRoute) {
+      const path = this.geometry.pathsByName.get(name);
+      if (path) this.tracePath(ctx, path);
+    }
+    ctx.stroke();
+    ctx.restore();
+  }
+
+  drawSelection(ctx) {
+    const selected = this.selection;
+    if (!selected || selected.kind === 'vehicle') return;
+    const element = this.elementNamed(selected.kind, selected.name);
+    if (!element) return;
+    ctx.save();
+    ctx.strokeStyle = COLOURS.selection;
+    ctx.lineWidth = 3;
+    ctx.beginPath();
+    if (element.kind === 'path') {
+      this.tracePath(ctx, element);
+    } else {
+      const p = this.view.toScreen(element.x, element.y);
+      ctx.arc(p.x, p.y, 14, 0, 2 * Math.PI);
+    }
+    ctx.stroke();
+    ctx.restore();
+  }
+
+  elementNamed(kind, name) {
+    const geometry = this.geometry;
+    if (!geometry) return null;
+    if (kind === 'point') return geometry.points.get(name);
+    if (kind === 'path') return geometry.pathsByName.get(name);
+    if (kind === 'location') return geometry.locationsByName.get(name);
+    return null;
+  }
+
+  /** Where an element is drawn, in page coordinates (its middle for a path). */
+  pagePositionOf(kind, name) {
+    const box = this.canvas.getBoundingClientRect();
+    let screen;
+    if (kind === 'vehicle') {
+      screen = this.vehicles.drawnPosition(name);
+    } else {
+      const element = this.elementNamed(kind, name);
+      if (!element) return null;
+      const model = kind === 'path' ? midpointOf(element) : element;
+      screen = this.view.toScreen(model.x, model.y);
+    }
+    return screen ? { x: box.left + screen.x, y: box.top + screen.y } : null;
+  }
+
+  /** The element drawn under a canvas position: vehicles first, then locations, points, paths. */
+  hit(x, y) {
+    const vehicle = this.vehicles.hit(x, y);
+    if (vehicle) return { kind: 'vehicle', name: vehicle };
+    if (!this.geometry) return null;
+    const model = this.view.toModel(x, y);
+    const tolerance = 8 / this.view.scale;
+    const rect = { minX: model.x - tolerance, maxX: model.x + tolerance, minY: model.y - tolerance, maxY: model.y + tolerance };
+    const candidates = [...this.geometry.index.query(rect)].filter((e) => this.isVisible(e));
+    const locationReach = clamp(LOCATION_SIZE_MM * this.view.scale, 8, 30) / 2 / this.view.scale;
+    const byDistance = (kind, reach, distance) => candidates.filter((e) => e.kind === kind)
+      .map((e) => ({ e, d: distance(e) })).filter(({ d }) => d <= reach).sort((a, b) => a.d - b.d)[0]?.e;
+    const pointDistance = (e) => Math.hypot(e.x - model.x, e.y - model.y);
+    const found = byDistance('location', Math.max(locationReach, tolerance), pointDistance)
+      ?? byDistance('point', tolerance, pointDistance)
+      ?? byDistance('path', tolerance * 0.75, (e) => distanceToLine(e.line, model.x, model.y));
+    return found ? { kind: found.kind, name: found.name } : null;
+  }
+
+  installInteraction() {
+    const target = this.overlay;
+    let drag = null;
+    target.addEventListener('pointerdown', (event) => {
+      drag = { x: event.offsetX, y: event.offsetY, moved: 0 };
+      target.setPointerCapture(event.pointerId);
+    });
+    target.addEventListener('pointermove', (event) => {
+      if (!drag) return;
+      const dx = event.offsetX - drag.x;
+      const dy = event.offsetY - drag.y;
+      drag.moved += Math.abs(dx) + Math.abs(dy);
+      drag.x = event.offsetX;
+      drag.y = event.offsetY;
+      if (drag.moved > 4) {
+        this.userMoved = true;
+        this.view.pan(dx, dy);
+        this.invalidate();
+      }
+    });
+    target.addEventListener('pointerup', (event) => {
+      if (drag && drag.moved <= 4) this.onSelect(this.hit(event.offsetX, event.offsetY));
+      drag = null;
+    });
+    target.addEventListener('wheel', (event) => {
+      event.preventDefault();
+      this.userMoved = true;
+      this.view.zoomAt(Math.exp(-event.deltaY * 0.0015), event.offsetX, event.offsetY);
+      this.invalidate();
+    }, { passive: false });
+  }
+}
+
+function intersects(element, rect) {
+  const b = element.bounds;
+  if (!b) return element.x >= rect.minX && element.x <= rect.maxX && element.y >= rect.minY && element.y <= rect.maxY;
+  return b.maxX >= rect.minX && b.minX <= rect.maxX && b.maxY >= rect.minY && b.minY <= rect.maxY;
+}
+
+function traceArrow(ctx, x, y, angle) {
+  const size = 6;
+  const cos = Math.cos(angle);
+  const sin = Math.sin(angle);
+  ctx.moveTo(x + cos * size, y + sin * size);
+  ctx.lineTo(x - cos * size - sin * size * 0.7, y - sin * size + cos * size * 0.7);
+  ctx.lineTo(x - cos * size + sin * size * 0.7, y - sin * size - cos * size * 0.7);
+  ctx.closePath();
+}
+
+/** Draws a location symbol of a theme style: a shape name or a single character. */
+export function drawSymbol(ctx, style, x, y, size) {
+  const half = size / 2;
+  ctx.save();
+  ctx.fillStyle = style.fill;
+  ctx.strokeStyle = style.stroke;
+  ctx.lineWidth = style.lineWidth ?? 1.5;
+  ctx.beginPath();
+  switch (style.symbol) {
+    case 'none':
+      ctx.restore();
+      return;
+    case 'circle':
+      ctx.arc(x, y, half, 0, 2 * Math.PI);
+      break;
+    case 'triangle':
+      ctx.moveTo(x, y - half);
+      ctx.lineTo(x + half, y + half);
+      ctx.lineTo(x - half, y + half);
+      ctx.closePath();
+      break;
+    case 'diamond':
+      ctx.moveTo(x, y - half);
+      ctx.lineTo(x + half, y);
+      ctx.lineTo(x, y + half);
+      ctx.lineTo(x - half, y);
+      ctx.closePath();
+      break;
+    default:
+      ctx.rect(x - half, y - half, size, size);
+  }
+  ctx.fill();
+  ctx.stroke();
+  if (typeof style.symbol === 'string' && style.symbol.length === 1) {
+    ctx.fillStyle = style.stroke;
+    ctx.font = `bold ${Math.round(size * 0.7)}px system-ui, sans-serif`;
+    ctx.textAlign = 'center';
+    ctx.textBaseline = 'middle';
+    ctx.fillText(style.symbol, x, y + 1);
+  }
+  ctx.restore();
+}
+
+function drawCross(ctx, x, y, size) {
+  ctx.save();
+  ctx.strokeStyle = COLOURS.locked;
+  ctx.lineWidth = 3;
+  ctx.beginPath();
+  ctx.moveTo(x - size, y - size);
+  ctx.lineTo(x + size, y + size);
+  ctx.moveTo(x + size, y - size);
+  ctx.lineTo(x - size, y + size);
+  ctx.stroke();
+  ctx.restore();
+}
+
+export function clamp(value, min, max) {
+  return Math.max(min, Math.min(max, value));
+}

@@ -1,0 +1,184 @@
+package org.ktcs.overview
+
+import com.microsoft.playwright.Page
+import com.microsoft.playwright.assertions.LocatorAssertions
+import com.microsoft.playwright.assertions.PlaywrightAssertions.assertThat
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.doubles.shouldBeGreaterThan
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.shouldNotBe
+import kotlinx.serialization.json.Json
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.boolean
+import kotlinx.serialization.json.jsonArray
+import kotlinx.serialization.json.jsonObject
+import kotlinx.serialization.json.jsonPrimitive
+import kotlinx.serialization.json.long
+import java.util.regex.Pattern
+import kotlin.math.hypot
+
+/**
+ * The overview in real headless Chromium against the real application (demo plant, loopback vehicles). One
+ * application and one page serve every test, in order; every test fails on any console or page error.
+ */
+class OverviewBrowserTest : FunSpec({
+    var ktcs: RunningKtcs? = null
+    var session: Chromium.Session? = null
+    lateinit var watched: Chromium.WatchedPage
+    val page: () -> Page = { watched.page }
+
+    fun browserTest(name: String, body: suspend () -> Unit) = test(name) {
+        Chromium.assumeAvailable()
+        if (session == null) {
+            ktcs = RunningKtcs()
+            session = Chromium.start()
+            watched = session!!.newPage()
+            watched.page.navigate(ktcs!!.baseUrl + "/")
+            watched.page.waitForFunction("() => window.ktcsOverview && window.ktcsOverview.connected()")
+        }
+        body()
+        watched.errors.shouldBeEmpty()
+    }
+
+    fun model(): JsonObject = Json.parseToJsonElement(ktcs!!.get("/v1/plantModel").body()).jsonObject
+
+    fun drawn(): Map<*, *> = page().evaluate("() => window.ktcsOverview.drawn()") as Map<*, *>
+
+    fun position(kind: String, name: String): Pair<Double, Double>? {
+        val found = page().evaluate("([k, n]) => window.ktcsOverview.pagePositionOf(k, n)", listOf(kind, name))
+            as Map<*, *>? ?: return null
+        return (found["x"] as Number).toDouble() to (found["y"] as Number).toDouble()
+    }
+
+    afterSpec {
+        session?.close()
+        ktcs?.close()
+    }
+
+    browserTest("the plant shows as many points, paths and locations as the model has; layers hide them") {
+        val model = model()
+        page().waitForFunction("() => window.ktcsOverview.drawn().vehicles > 0")
+        val counts = drawn()
+        (counts["points"] as Number).toInt() shouldBe model["points"]!!.jsonArray.size
+        (counts["paths"] as Number).toInt() shouldBe model["paths"]!!.jsonArray.size
+        (counts["locations"] as Number).toInt() shouldBe model["locations"]!!.jsonArray.size
+        assertThat(page().locator("#plant-summary")).containsText("${model["points"]!!.jsonArray.size} points")
+        assertThat(page().locator("#connection")).hasText("live")
+        (page().evaluate("() => window.ktcsOverview.vehicleStyle('Vehicle-01')") as Map<*, *>)["label"] shouldBe
+            "Vehicle-01"
+        watched.screenshot("plant")
+        page().locator("[data-layer='0']").uncheck()
+        page().waitForFunction("() => window.ktcsOverview.drawn().points === 0")
+        page().locator("[data-layer='0']").check()
+        page().waitForFunction("n => window.ktcsOverview.drawn().points === n", model["points"]!!.jsonArray.size)
+    }
+
+    browserTest("a vehicle's drawn position changes while it drives") {
+        val created = ktcs!!.post(
+            "/v1/transportOrders/Drive-1",
+            """{"intendedVehicle":"Vehicle-01","destinations":[{"locationName":"Storage 01","operation":"Load cargo"},
+               {"locationName":"Goods out 01","operation":"Unload cargo"}]}""",
+        )
+        created.statusCode() shouldBe 200
+        page().waitForFunction("() => window.ktcsOverview.pagePositionOf('vehicle', 'Vehicle-01') !== null")
+        val start = position("vehicle", "Vehicle-01")!!
+        page().waitForFunction(
+            "([x, y]) => { const p = window.ktcsOverview.pagePositionOf('vehicle', 'Vehicle-01');" +
+                " return Math.hypot(p.x - x, p.y - y) > 5; }",
+            listOf(start.first, start.second),
+            Page.WaitForFunctionOptions().setTimeout(20_000.0),
+        )
+        val later = position("vehicle", "Vehicle-01")!!
+        hypot(later.first - start.first, later.second - start.second) shouldBeGreaterThan 5.0
+        page().locator("[data-vehicle='Vehicle-01']").click()
+        assertThat(page().locator("#details h2")).hasText("Vehicle Vehicle-01")
+        watched.screenshot("vehicle-details")
+    }
+
+    browserTest("an order created in the dialog reaches FINISHED in the order table") {
+        page().locator("[data-tab=orders]").click()
+        page().locator("[data-action=new-order]").click()
+        val dialog = page().locator("#order-dialog")
+        dialog.locator("[name=destination]").selectOption("location:Storage 01")
+        dialog.locator("[name=operation]").selectOption("Load cargo")
+        dialog.getByText("+ Destination").click()
+        dialog.locator("[name=destination]").nth(1).selectOption("location:Goods out 01")
+        dialog.locator("[name=operation]").nth(1).selectOption("Unload cargo")
+        dialog.locator("[name=name]").fill("Browser-Order-1")
+        watched.screenshot("order-dialog")
+        dialog.locator("[data-action=create-order]").click()
+        val state = page().locator("[data-order='Browser-Order-1'] [data-column=state]")
+        assertThat(state).hasText("FINISHED", LocatorAssertions.HasTextOptions().setTimeout(60_000.0))
+        page().locator("[data-order='Browser-Order-1']").click()
+        assertThat(page().locator("#details h2")).hasText("Order Browser-Order-1")
+        watched.screenshot("orders")
+    }
+
+    browserTest("a path locked in the page is locked in the kernel") {
+        val path = model()["paths"]!!.jsonArray.map { it.jsonObject }.maxBy { it["length"]!!.jsonPrimitive.long }
+        val name = path["name"]!!.jsonPrimitive.content
+        page().locator("#fit").click()
+        val (x, y) = position("path", name)!!
+        page().mouse().click(x, y)
+        assertThat(page().locator("#details h2")).hasText("Path $name")
+        page().locator("#details [data-action=lock]").click()
+        assertThat(page().locator("#toasts")).containsText("Lock path $name: done")
+        val locked = { model()["paths"]!!.jsonArray.first { it.jsonObject["name"]!!.jsonPrimitive.content == name } }
+        locked().jsonObject["locked"]!!.jsonPrimitive.boolean shouldBe true
+        watched.screenshot("path-locked")
+        page().locator("#details [data-action=unlock]").click()
+        assertThat(page().locator("#toasts")).containsText("Unlock path $name: done")
+        locked().jsonObject["locked"]!!.jsonPrimitive.boolean shouldBe false
+        page().locator("#details .close").click()
+    }
+
+    browserTest("the load generator panel creates orders between the chosen locations") {
+        page().locator("[data-tab=panel-load-generator]").click()
+        val panel = page().locator("[data-panel=load-generator]")
+        panel.locator("[data-role=from]").selectOption("Storage 01")
+        panel.locator("[data-role=to]").selectOption("Goods out 01")
+        panel.locator("[data-role=rate]").fill("120")
+        panel.locator("[data-role=toggle]").click()
+        assertThat(panel.locator("[data-role=status]"))
+            .hasText(
+                Pattern.compile("Running · created [1-9]"),
+                LocatorAssertions.HasTextOptions().setTimeout(10_000.0),
+            )
+        watched.screenshot("panel-load-generator")
+        panel.locator("[data-role=toggle]").click()
+        assertThat(panel.locator("[data-role=status]")).containsText("Stopped")
+        assertThat(panel.locator("[data-role=error]")).isEmpty()
+    }
+
+    browserTest("the statistics panel charts finished orders and vehicle time") {
+        page().locator("[data-tab=panel-statistics]").click()
+        val panel = page().locator("[data-panel=statistics]")
+        assertThat(panel.locator("[data-role=totals]")).hasText(Pattern.compile("Finished: [1-9]"))
+        assertThat(panel.locator("[data-role=per-minute] rect:not([height='0'])").first()).isVisible()
+        assertThat(panel.locator("[data-role=activity] text").first())
+            .isVisible(LocatorAssertions.IsVisibleOptions().setTimeout(10_000.0))
+        watched.screenshot("panel-statistics")
+    }
+
+    browserTest("the resource allocation panel lists what each vehicle holds") {
+        page().locator("[data-tab=panel-resource-allocation]").click()
+        val panel = page().locator("[data-panel=resource-allocation]")
+        assertThat(panel.locator("[data-role=vehicles] tbody tr")).hasCount(4)
+        assertThat(panel.locator("[data-role=vehicles] tbody")).containsText("Vehicle-01")
+        assertThat(panel.locator("[data-role=resources] tbody")).containsText("Point-")
+        watched.screenshot("panel-resources")
+    }
+
+    browserTest("after the WebSocket drops, the page reconnects and resynchronises by itself") {
+        page().evaluate("() => window.ktcsOverview.dropConnection()")
+        page().waitForFunction("() => !window.ktcsOverview.connected()")
+        page().waitForFunction(
+            "() => window.ktcsOverview.connected()",
+            null,
+            Page.WaitForFunctionOptions().setTimeout(10_000.0),
+        )
+        assertThat(page().locator("#connection")).hasText("live")
+        (drawn()["vehicles"] as Number).toInt() shouldNotBe 0
+    }
+})

@@ -1,0 +1,52 @@
+package org.ktcs.overview
+
+import org.ktcs.adapters.loopback.LoopbackExtension
+import org.ktcs.kernel.app.KernelApplication
+import org.ktcs.kernel.app.LoadedModel
+import org.ktcs.kernel.app.PlantModelLoader
+import org.ktcs.kernel.config.ConfigLoader
+import java.net.URI
+import java.net.http.HttpClient
+import java.net.http.HttpRequest
+import java.net.http.HttpResponse
+
+/** The real kernel application with loopback vehicles and the overview, in-process on a free port. */
+class RunningKtcs(
+    overrides: List<String> = emptyList(),
+    model: LoadedModel = PlantModelLoader.loadDemo(),
+) : AutoCloseable {
+    private val config = ConfigLoader().load(null, emptyMap(), BASE_SETTINGS + overrides)
+    private val application = KernelApplication(config, model, listOf(LoopbackExtension(), OverviewExtension()))
+    private val http = HttpClient.newHttpClient()
+
+    /** E.g. `http://127.0.0.1:41234`. */
+    val baseUrl: String = WEB_ADDRESS.find(application.start())?.groupValues?.get(1)
+        ?: error("the ready line names no web API address")
+
+    fun get(path: String): HttpResponse<String> = send(HttpRequest.newBuilder(uri(path)).GET())
+
+    fun post(path: String, json: String): HttpResponse<String> = send(
+        HttpRequest.newBuilder(uri(path)).header("Content-Type", "application/json")
+            .POST(HttpRequest.BodyPublishers.ofString(json)),
+    )
+
+    private fun uri(path: String) = URI.create(baseUrl + path)
+
+    private fun send(request: HttpRequest.Builder): HttpResponse<String> =
+        http.send(request.build(), HttpResponse.BodyHandlers.ofString())
+
+    override fun close() = application.stop()
+
+    private companion object {
+        val WEB_ADDRESS = Regex("""web API (http://\S+)/v1""")
+
+        // Fast simulated vehicles, so orders finish within seconds.
+        val BASE_SETTINGS = listOf(
+            "web.bindAddress=127.0.0.1",
+            "web.port=0",
+            "loopback.timeFactor=10",
+            "loopback.operatingTime=2000",
+            "log.level=WARN",
+        )
+    }
+}
