@@ -20,6 +20,7 @@ import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.kernel.core.StepDriverFactory
 import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.kernel.web.contract.WebApiContracts
 import java.net.URI
 import java.net.http.HttpClient
 import java.net.http.HttpRequest
@@ -36,7 +37,8 @@ class WebApiTest : FunSpec({
 
         override fun module(): Module = module { single { StepDriverFactory() } bind VehicleDriverFactory::class }
     }
-    val http = HttpClient.newHttpClient()
+    val client = WebApiClient()
+    val http = client.http
 
     var shutdownRequests = 0
 
@@ -48,13 +50,9 @@ class WebApiTest : FunSpec({
         return application to base
     }
 
-    fun call(method: String, url: String, body: String? = null, key: String? = null): HttpResponse<String> {
-        val publisher = body?.let(HttpRequest.BodyPublishers::ofString) ?: HttpRequest.BodyPublishers.noBody()
-        val request = HttpRequest.newBuilder(URI(url)).method(method, publisher)
-        key?.let { request.header("X-Api-Access-Key", it) }
-        if (body != null) request.header("Content-Type", "application/json")
-        return http.send(request.build(), HttpResponse.BodyHandlers.ofString())
-    }
+    // Checks every response against kTCS's and openTCS's OpenAPI documents.
+    fun call(method: String, url: String, body: String? = null, key: String? = null): HttpResponse<String> =
+        client.call(method, url, body, key)
 
     fun json(response: HttpResponse<String>) = Json.parseToJsonElement(response.body())
 
@@ -193,11 +191,19 @@ class WebApiTest : FunSpec({
             stream.headers().firstValue("Content-Type").get() shouldStartWith "text/event-stream"
             call("POST", "$base/transportOrders/T10", order).statusCode() shouldBe 200
             val lines = stream.body().iterator()
-            val names = generateSequence { if (lines.hasNext()) lines.next() else null }
-                .filter { it.startsWith("event: ") }
-                .take(2)
+            val frames = generateSequence { if (lines.hasNext()) lines.next() else null }
+                .filter { it.startsWith("event: ") || it.startsWith("data: ") }
+                .take(4)
                 .toList()
-            names shouldBe listOf("event: /events/transportOrders", "event: /events/transportOrders")
+            frames.filter { it.startsWith("event: ") } shouldBe
+                listOf("event: /events/transportOrders", "event: /events/transportOrders")
+            frames.filter { it.startsWith("data: ") }.forEach {
+                WebApiContracts.openTcsSchemaViolations(
+                    "paths/sse.yaml",
+                    "/components/schemas/TransportOrderEvent",
+                    it.removePrefix("data: "),
+                ) shouldBe emptyList()
+            }
         } finally {
             application.stop()
         }
@@ -238,7 +244,15 @@ class WebApiTest : FunSpec({
             }
             val ws = URI(base.replace("http:", "ws:") + "/ws")
             val socket = http.newWebSocketBuilder().buildAsync(ws, listener).get()
-            fun next() = Json.parseToJsonElement(received.poll(10, TimeUnit.SECONDS)!!).jsonObject
+            fun next(): JsonObject {
+                val message = received.poll(10, TimeUnit.SECONDS)!!
+                WebApiContracts.ktcs.violationsOf(
+                    pointer = "/components/schemas/WsServerMessage",
+                    json = message,
+                ) shouldBe
+                    emptyList()
+                return Json.parseToJsonElement(message).jsonObject
+            }
 
             socket.sendText("""{"type":"subscribe","topics":["nonsense"]}""", true).get()
             next()["type"]!!.jsonPrimitive.content shouldBe "error"
