@@ -1,5 +1,6 @@
 package org.ktcs.kernel.web
 
+import io.kotest.assertions.nondeterministic.eventually
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldContainAll
 import io.kotest.matchers.shouldBe
@@ -29,6 +30,8 @@ import java.net.http.WebSocket
 import java.util.concurrent.CompletionStage
 import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit
+import java.util.concurrent.atomic.AtomicInteger
+import kotlin.time.Duration.Companion.seconds
 
 /** The web API v1 of a running kernel, over real HTTP: happy paths, bad input, 404, 409, the access key. */
 class WebApiTest : FunSpec({
@@ -40,12 +43,14 @@ class WebApiTest : FunSpec({
     val client = WebApiClient()
     val http = client.http
 
-    var shutdownRequests = 0
+    val shutdownRequests = AtomicInteger()
 
     fun start(vararg settings: String): Pair<KernelApplication, String> {
         val config = ConfigLoader().load(null, emptyMap(), listOf("web.bindAddress=127.0.0.1", "web.port=0") + settings)
         val application =
-            KernelApplication(config, PlantModelLoader.loadDemo(), listOf(testVehicles)) { shutdownRequests++ }
+            KernelApplication(config, PlantModelLoader.loadDemo(), listOf(testVehicles)) {
+                shutdownRequests.incrementAndGet()
+            }
         val base = Regex("web API (http://\\S+/v1)").find(application.start())!!.groupValues[1]
         return application to base
     }
@@ -153,7 +158,8 @@ class WebApiTest : FunSpec({
             call("POST", "$base/plantModel/topologyUpdateRequest", """{}""").body() shouldBe """["paths is missing"]"""
 
             call("DELETE", "$base/kernel").statusCode() shouldBe 200
-            shutdownRequests shouldBe 1
+            // The server answers first and then asks to stop, so the answer may arrive a moment before the request.
+            eventually(5.seconds) { shutdownRequests.get() shouldBe 1 }
         } finally {
             application.stop()
         }
