@@ -8,6 +8,7 @@ import com.networknt.schema.Schema
 import com.networknt.schema.SchemaLocation
 import com.networknt.schema.SchemaRegistry
 import com.networknt.schema.dialect.Dialects
+import java.net.URI
 import java.util.concurrent.ConcurrentHashMap
 
 /**
@@ -20,18 +21,16 @@ class OpenApiContract(val name: String, private val root: String) {
     private val yaml = ObjectMapper(YAMLFactory())
     private val registry = SchemaRegistry.withDefaultDialect(Dialects.getOpenApi30())
     private val schemas = ConcurrentHashMap<String, Schema>()
+    private val files = ConcurrentHashMap<String, JsonNode>()
     private val paths: Map<String, PathItem> = read(root).required("paths").properties().associate { (template, item) ->
         template to pathItem(template, item)
     }
 
     /** One violation: [where] (contract and operation), the JSON [pointer] into the body if the body is wrong, what. */
     data class Violation(val where: String, val pointer: String?, val message: String) {
-        override fun toString() = if (pointer ==
-            null
-        ) {
-            "$where $message"
-        } else {
-            "$where: ${pointer.ifEmpty { "/" }} $message"
+        override fun toString() = when (pointer) {
+            null -> "$where $message"
+            else -> "$where: ${pointer.ifEmpty { "/" }} $message"
         }
     }
 
@@ -63,13 +62,8 @@ class OpenApiContract(val name: String, private val root: String) {
             responseOf(method, template, status) ?: return listOf(Violation(operation, null, "is not described"))
         val content = response.node.get("content")
         if (content == null || content.isEmpty) {
-            return if (body.isEmpty()) {
-                emptyList()
-            } else {
-                listOf(
-                    Violation(operation, null, "describes no body, but got: ${body.take(200)}"),
-                )
-            }
+            val unexpected = body.takeIf { it.isNotEmpty() } ?: return emptyList()
+            return listOf(Violation(operation, null, "describes no body, but got: ${unexpected.take(200)}"))
         }
         if (!content.has("application/json")) return emptyList()
         if (contentType?.startsWith("application/json") != true) {
@@ -78,7 +72,7 @@ class OpenApiContract(val name: String, private val root: String) {
         return violationsOf(response.file, "${response.pointer}/content/application~1json/schema", body, operation)
     }
 
-    /** The violations of [json] against the schema at [pointer] (e.g. `/components/schemas/X`) of [file] (default: the root). */
+    /** The violations of [json] against the schema at [pointer] (`/components/schemas/X`) of [file] (default: root). */
     fun violationsOf(file: String = root, pointer: String, json: String, where: String = name): List<Violation> {
         val schema = schemas.computeIfAbsent("$file#$pointer") {
             registry.getSchema(SchemaLocation.of("classpath:$file#$pointer"))
@@ -105,9 +99,9 @@ class OpenApiContract(val name: String, private val root: String) {
         return Response(item.file, ref.substringAfter('#'), read(item.file).at(ref.substringAfter('#')))
     }
 
-    private fun read(file: String): JsonNode = yaml.readTree(
-        requireNotNull(javaClass.classLoader.getResource(file)) { "$file is not on the test class path" },
-    )
+    private fun read(file: String): JsonNode = files.computeIfAbsent(file) {
+        yaml.readTree(requireNotNull(javaClass.classLoader.getResource(file)) { "$file is not on the test class path" })
+    }
 
     private companion object {
         fun matches(template: String, path: String): Boolean {
@@ -118,7 +112,7 @@ class OpenApiContract(val name: String, private val root: String) {
         }
 
         fun resolve(base: String, relative: String): String =
-            java.net.URI("x:/$base").resolve(relative).path.removePrefix("/")
+            URI("x:/$base").resolve(relative).path.removePrefix("/")
 
         fun escape(key: String) = key.replace("~", "~0").replace("/", "~1")
 
