@@ -24,8 +24,12 @@ dependencies {
     api(libs.jgrapht.core)
     api(libs.jackson.dataformat.xml)
     api(libs.jackson.module.kotlin)
+    api(libs.jackson.dataformat.yaml)
     api(libs.logback.classic)
+    runtimeOnly(libs.swagger.ui)
 
     testImplementation(libs.mockk)
     testImplementation(libs.ktor.server.test.host)
+    testImplementation(libs.swagger.parser)
+    testImplementation(libs.json.schema.validator)
 }

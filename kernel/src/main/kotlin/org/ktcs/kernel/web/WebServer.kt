@@ -19,6 +19,9 @@ import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.config.KtcsConfig
 import org.ktcs.kernel.config.KtcsSettings
 import org.ktcs.kernel.events.SubscriberTooSlowException
+import org.ktcs.kernel.web.docs.ApiDocument
+import org.ktcs.kernel.web.docs.docsRoutes
+import org.ktcs.kernel.web.docs.openApiRoutes
 import org.ktcs.kernel.web.plugins.AccessKey
 import org.ktcs.kernel.web.plugins.Cors
 import org.ktcs.kernel.web.plugins.RequestSizeLimit
@@ -95,10 +98,13 @@ fun Application.webModule(
     install(WebSockets)
     val statusEvents = StatusEventBuffer()
     launch { feed(statusEvents, services) }
+    val document = ApiDocument.current
     routing {
         contributions.forEach { it.install(this) }
+        docsRoutes(document)
         route("/v1") {
             install(AccessKey) { key = options.accessKey }
+            openApiRoutes(document)
             kernelRoutes(version, shutdown)
             transportOrderRoutes(services)
             orderSequenceRoutes(services)

@@ -1,5 +1,6 @@
 package org.ktcs.kernel.web
 
+import io.kotest.assertions.nondeterministic.eventually
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldContainAll
 import io.kotest.matchers.shouldBe
@@ -20,6 +21,7 @@ import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.kernel.core.StepDriverFactory
 import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.kernel.web.contract.WebApiContracts
 import java.net.URI
 import java.net.http.HttpClient
 import java.net.http.HttpRequest
@@ -28,6 +30,8 @@ import java.net.http.WebSocket
 import java.util.concurrent.CompletionStage
 import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit
+import java.util.concurrent.atomic.AtomicInteger
+import kotlin.time.Duration.Companion.seconds
 
 /** The web API v1 of a running kernel, over real HTTP: happy paths, bad input, 404, 409, the access key. */
 class WebApiTest : FunSpec({
@@ -36,25 +40,24 @@ class WebApiTest : FunSpec({
 
         override fun module(): Module = module { single { StepDriverFactory() } bind VehicleDriverFactory::class }
     }
-    val http = HttpClient.newHttpClient()
+    val client = WebApiClient()
+    val http = client.http
 
-    var shutdownRequests = 0
+    val shutdownRequests = AtomicInteger()
 
     fun start(vararg settings: String): Pair<KernelApplication, String> {
         val config = ConfigLoader().load(null, emptyMap(), listOf("web.bindAddress=127.0.0.1", "web.port=0") + settings)
         val application =
-            KernelApplication(config, PlantModelLoader.loadDemo(), listOf(testVehicles)) { shutdownRequests++ }
+            KernelApplication(config, PlantModelLoader.loadDemo(), listOf(testVehicles)) {
+                shutdownRequests.incrementAndGet()
+            }
         val base = Regex("web API (http://\\S+/v1)").find(application.start())!!.groupValues[1]
         return application to base
     }
 
-    fun call(method: String, url: String, body: String? = null, key: String? = null): HttpResponse<String> {
-        val publisher = body?.let(HttpRequest.BodyPublishers::ofString) ?: HttpRequest.BodyPublishers.noBody()
-        val request = HttpRequest.newBuilder(URI(url)).method(method, publisher)
-        key?.let { request.header("X-Api-Access-Key", it) }
-        if (body != null) request.header("Content-Type", "application/json")
-        return http.send(request.build(), HttpResponse.BodyHandlers.ofString())
-    }
+    // Checks every response against kTCS's and openTCS's OpenAPI documents.
+    fun call(method: String, url: String, body: String? = null, key: String? = null): HttpResponse<String> =
+        client.call(method, url, body, key)
 
     fun json(response: HttpResponse<String>) = Json.parseToJsonElement(response.body())
 
@@ -155,7 +158,8 @@ class WebApiTest : FunSpec({
             call("POST", "$base/plantModel/topologyUpdateRequest", """{}""").body() shouldBe """["paths is missing"]"""
 
             call("DELETE", "$base/kernel").statusCode() shouldBe 200
-            shutdownRequests shouldBe 1
+            // The server answers first and then asks to stop, so the answer may arrive a moment before the request.
+            eventually(5.seconds) { shutdownRequests.get() shouldBe 1 }
         } finally {
             application.stop()
         }
@@ -193,11 +197,19 @@ class WebApiTest : FunSpec({
             stream.headers().firstValue("Content-Type").get() shouldStartWith "text/event-stream"
             call("POST", "$base/transportOrders/T10", order).statusCode() shouldBe 200
             val lines = stream.body().iterator()
-            val names = generateSequence { if (lines.hasNext()) lines.next() else null }
-                .filter { it.startsWith("event: ") }
-                .take(2)
+            val frames = generateSequence { if (lines.hasNext()) lines.next() else null }
+                .filter { it.startsWith("event: ") || it.startsWith("data: ") }
+                .take(4)
                 .toList()
-            names shouldBe listOf("event: /events/transportOrders", "event: /events/transportOrders")
+            frames.filter { it.startsWith("event: ") } shouldBe
+                listOf("event: /events/transportOrders", "event: /events/transportOrders")
+            frames.filter { it.startsWith("data: ") }.forEach {
+                WebApiContracts.openTcsSchemaViolations(
+                    "paths/sse.yaml",
+                    "/components/schemas/TransportOrderEvent",
+                    it.removePrefix("data: "),
+                ) shouldBe emptyList()
+            }
         } finally {
             application.stop()
         }
@@ -238,7 +250,15 @@ class WebApiTest : FunSpec({
             }
             val ws = URI(base.replace("http:", "ws:") + "/ws")
             val socket = http.newWebSocketBuilder().buildAsync(ws, listener).get()
-            fun next() = Json.parseToJsonElement(received.poll(10, TimeUnit.SECONDS)!!).jsonObject
+            fun next(): JsonObject {
+                val message = received.poll(10, TimeUnit.SECONDS)!!
+                WebApiContracts.ktcs.violationsOf(
+                    pointer = "/components/schemas/WsServerMessage",
+                    json = message,
+                ) shouldBe
+                    emptyList()
+                return Json.parseToJsonElement(message).jsonObject
+            }
 
             socket.sendText("""{"type":"subscribe","topics":["nonsense"]}""", true).get()
             next()["type"]!!.jsonPrimitive.content shouldBe "error"

@@ -22,9 +22,10 @@ import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.kernel.core.StepDriverFactory
 import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.kernel.web.WebApiClient
+import org.ktcs.kernel.web.contract.WebApiContracts
 import java.net.URI
 import java.net.http.HttpClient
-import java.net.http.HttpRequest
 import java.net.http.HttpResponse
 import java.net.http.WebSocket
 import java.util.concurrent.CompletionStage
@@ -54,12 +55,10 @@ class PutPlantModelTest : FunSpec({
     }
     afterEach { application.stop() }
 
-    fun call(method: String, path: String, body: String? = null): HttpResponse<String> {
-        val publisher = body?.let(HttpRequest.BodyPublishers::ofString) ?: HttpRequest.BodyPublishers.noBody()
-        val request = HttpRequest.newBuilder(URI(base + path)).method(method, publisher)
-        if (body != null) request.header("Content-Type", "application/json")
-        return http.send(request.build(), HttpResponse.BodyHandlers.ofString())
-    }
+    val client = WebApiClient(http)
+
+    fun call(method: String, path: String, body: String? = null): HttpResponse<String> =
+        client.call(method, base + path, body)
 
     fun model(): JsonObject = Json.parseToJsonElement(call("GET", "/plantModel").body()).jsonObject
     fun JsonObject.names(field: String) = this[field]!!.jsonArray.map { it.jsonObject["name"]!!.jsonPrimitive.content }
@@ -155,7 +154,12 @@ class PutPlantModelTest : FunSpec({
             }
         }
         val socket = http.newWebSocketBuilder().buildAsync(URI(base.replace("http:", "ws:") + "/ws"), listener).get()
-        fun next() = Json.parseToJsonElement(received.poll(10, TimeUnit.SECONDS)!!).jsonObject
+        fun next(): JsonObject {
+            val message = received.poll(10, TimeUnit.SECONDS)!!
+            WebApiContracts.ktcs.violationsOf(pointer = "/components/schemas/WsServerMessage", json = message) shouldBe
+                emptyList()
+            return Json.parseToJsonElement(message).jsonObject
+        }
         fun JsonObject.text(key: String) = this[key]!!.jsonPrimitive.content
         socket.sendText("""{"type":"subscribe","topics":["vehicles"]}""", true).get()
         next()["objects"]!!.jsonArray.size shouldBe 4
