@@ -238,6 +238,13 @@ object KtcsSettings {
         "Simulated milliseconds between precise-position reports while driving (0: only at points).",
     )
 
+    val extensionsDirectory = stringSetting(
+        "extensions.directory",
+        "extensions",
+        "Directory of extension jars loaded at start (relative to the working directory); a missing directory is " +
+            "fine unless set explicitly.",
+    )
+
     val all: List<Setting<*>> = listOf(
         webBindAddress,
         webPort,
@@ -279,6 +286,7 @@ object KtcsSettings {
         loopbackRechargeRate,
         loopbackEnergyDrain,
         loopbackPositionReportInterval,
+        extensionsDirectory,
     )
 }
 
