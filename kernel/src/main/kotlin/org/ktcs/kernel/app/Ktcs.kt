@@ -25,6 +25,7 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
             is Command.Run -> runKernel(command.options, awaitShutdown)
             is Command.ShowConfig -> 0.also { out.println(ConfigFile.describe(config(command.options))) }
             Command.ConfigTemplate -> 0.also { out.print(ConfigFile.render()) }
+            Command.ConfigReference -> 0.also { out.print(ConfigReference.render()) }
             is Command.Simulate -> simulate(command.options)
             is Command.CheckModel -> ModelTools(out).check(command.file)
             is Command.ConvertModel -> ModelTools(out).convert(command.input, command.output)
