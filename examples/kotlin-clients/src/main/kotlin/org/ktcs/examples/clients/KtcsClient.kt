@@ -112,7 +112,7 @@ class KtcsClient(private val baseUrl: String, accessKey: String? = null) : AutoC
      */
     fun events(vararg topics: String): Flow<JsonObject> = channelFlow {
         http.webSocket("${baseUrl.replaceFirst("http", "ws")}/v1/ws") {
-            send(Frame.Text(json.encodeToString(Subscription.serializer(), Subscription(topics.toList()))))
+            send(Frame.Text(json.encodeToString(Subscription.serializer(), Subscription("subscribe", topics.toList()))))
             for (frame in incoming) {
                 if (frame is Frame.Text) sendMessage(json.parseToJsonElement(frame.readText()).jsonObject)
             }

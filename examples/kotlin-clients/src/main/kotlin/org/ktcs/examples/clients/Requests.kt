@@ -31,6 +31,6 @@ data class TransportOrderView(
 @Serializable
 data class VehicleView(val name: String, val currentPosition: String? = null, val procState: String)
 
-/** The subscription a WebSocket client sends first. */
+/** The subscription a WebSocket client sends first; `type` is always "subscribe". */
 @Serializable
-data class Subscription(val topics: List<String>, val type: String = "subscribe")
+data class Subscription(val type: String, val topics: List<String>)

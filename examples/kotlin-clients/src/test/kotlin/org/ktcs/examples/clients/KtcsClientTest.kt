@@ -1,6 +1,7 @@
 package org.ktcs.examples.clients
 
 import io.kotest.assertions.nondeterministic.eventually
+import io.kotest.assertions.withClue
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldContainAll
 import io.kotest.matchers.collections.shouldBeIn
@@ -80,7 +81,7 @@ class KtcsClientTest : FunSpec({
         val states = withTimeout(60.seconds) {
             client.events("transportOrders")
                 .onEach { message ->
-                    message["type"]!!.jsonPrimitive.content shouldNotBe "error"
+                    withClue(message) { message["type"]!!.jsonPrimitive.content shouldNotBe "error" }
                     // The snapshot comes first: once it is here, no change of the new order can be missed.
                     if (message["type"]!!.jsonPrimitive.content == "snapshot") {
                         client.createOrderToLocation("Watched", "Storage 01", "Load cargo")

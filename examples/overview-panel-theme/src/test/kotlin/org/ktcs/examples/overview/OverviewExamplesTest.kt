@@ -36,7 +36,7 @@ class OverviewExamplesTest : FunSpec({
         }
     }
 
-    context("with Node.js").config(enabledOrReasonIf = { Node.availability() }) {
+    context("with Node.js").config(enabledOrReasonIf = Node.availability()) {
         val panel = Node.copyModules(contributions.getValue("fleet-energy"), "panel.js", "energy.js")
         val theme = Node.copyModules(contributions.getValue("energy"), "theme.js")
 
