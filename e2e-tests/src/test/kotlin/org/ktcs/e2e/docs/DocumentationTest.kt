@@ -85,4 +85,3 @@ private fun mermaidEdges(markdown: String): Set<String> {
     return Regex("""^\s*(\w+)\s*-->\s*(\w+)""", RegexOption.MULTILINE).findAll(block.groupValues[1])
         .map { "${it.groupValues[1]} --> ${it.groupValues[2]}" }.toSet()
 }
-

@@ -61,14 +61,17 @@ object Snippets {
         val where = "${block.page}:${block.line}: ${block.source}#${block.region}"
         val source = root.resolve(block.source)
         if (!Files.isRegularFile(source)) return "$where: the file ${block.source} does not exist"
+        val markers = "// snippet:${block.region} ... // end-snippet"
         val expected = region(Files.readString(source), block.region)
-            ?: return "$where: ${block.source} has no region '${block.region}' (// snippet:${block.region} ... // end-snippet)"
+            ?: return "$where: ${block.source} has no region '${block.region}' ($markers)"
         if (expected == block.text) return null
         val expectedLines = expected.lines()
         val actualLines = block.text.lines()
         val first = (0 until maxOf(expectedLines.size, actualLines.size))
             .first { expectedLines.getOrNull(it) != actualLines.getOrNull(it) }
         return "$where: the block differs from the source at its line ${first + 1}: " +
-            "source has '${expectedLines.getOrNull(first) ?: "<end>"}', page has '${actualLines.getOrNull(first) ?: "<end>"}'"
+            "source has '${expectedLines.getOrNull(
+                first,
+            ) ?: "<end>"}', page has '${actualLines.getOrNull(first) ?: "<end>"}'"
     }
 }

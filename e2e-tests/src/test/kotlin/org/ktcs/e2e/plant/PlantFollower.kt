@@ -56,10 +56,12 @@ class PlantFollower(webBase: String) : AutoCloseable {
                 message["objects"]!!.jsonArray.forEach { update(topic, it.jsonObject) }
                 snapshots.countDown()
             }
+
             "event" -> {
                 eventCount++
                 (message["current"] as? JsonObject)?.let { update(topic, it) }
             }
+
             else -> errors += "unexpected WebSocket message: $message"
         }
     }
@@ -72,6 +74,7 @@ class PlantFollower(webBase: String) : AutoCloseable {
                 current["processingVehicle"]?.takeIf { it !is kotlinx.serialization.json.JsonNull }
                     ?.let { processors[name] = it.jsonPrimitive.content }
             }
+
             "vehicles" -> {
                 allocated[name] = (current["allocatedResources"] as JsonArray)
                     .flatMap { step -> step.jsonArray.map { it.jsonPrimitive.content } }.toSet()

@@ -195,7 +195,10 @@ private class StatusChannelFollower(port: Int) {
         }
         socket.close()
         reader.join(1_000)
-        withClue("the XML status channel reported FINISHED for $finished") { finished.containsAll(expected) shouldBe true }
+        withClue("the XML status channel reported FINISHED for $finished") {
+            finished.containsAll(expected) shouldBe
+                true
+        }
     }
 }
 

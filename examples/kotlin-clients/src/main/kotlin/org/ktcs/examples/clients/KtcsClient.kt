@@ -45,6 +45,7 @@ class KtcsClient(private val baseUrl: String, accessKey: String? = null) : AutoC
     // end-snippet
 
     // snippet:create-order-to-location
+
     /** Creates an order that performs [operation] at [location], e.g. "Load cargo" at "Storage 01". */
     suspend fun createOrderToLocation(name: String, location: String, operation: String): TransportOrderView =
         http.post("transportOrders/$name") {
@@ -54,6 +55,7 @@ class KtcsClient(private val baseUrl: String, accessKey: String? = null) : AutoC
     // end-snippet
 
     // snippet:create-order-to-point
+
     /** Creates an order that sends a vehicle (any, or [vehicle]) to [point]. */
     suspend fun createOrderToPoint(name: String, point: String, vehicle: String? = null): TransportOrderView =
         http.post("transportOrders/$name") {
@@ -63,6 +65,7 @@ class KtcsClient(private val baseUrl: String, accessKey: String? = null) : AutoC
     // end-snippet
 
     // snippet:order-sequence
+
     /**
      * Creates an order sequence and its orders, one per (location, operation) step, and marks it complete: one
      * vehicle carries them out one after the other, in this order.
@@ -84,6 +87,7 @@ class KtcsClient(private val baseUrl: String, accessKey: String? = null) : AutoC
     // end-snippet
 
     // snippet:withdraw-order
+
     /** Withdraws an order: regularly (the vehicle finishes what it was sent) or [immediate]ly. */
     suspend fun withdrawOrder(name: String, immediate: Boolean = false) {
         http.post("transportOrders/$name/withdrawal") { parameter("immediate", immediate) }
@@ -91,6 +95,7 @@ class KtcsClient(private val baseUrl: String, accessKey: String? = null) : AutoC
     // end-snippet
 
     // snippet:withdraw-by-vehicle
+
     /** Withdraws whatever [vehicle] is doing; [disableVehicle] also takes it out of dispatching. */
     suspend fun withdrawByVehicle(vehicle: String, immediate: Boolean = false, disableVehicle: Boolean = false) {
         http.post("vehicles/$vehicle/withdrawal") {
@@ -105,6 +110,7 @@ class KtcsClient(private val baseUrl: String, accessKey: String? = null) : AutoC
     suspend fun vehicle(name: String): VehicleView = http.get("vehicles/$name").body()
 
     // snippet:subscribe-events
+
     /**
      * The WebSocket's messages for [topics] (e.g. "transportOrders", "vehicles"): a snapshot per topic, then every
      * change as an event with `previous` and `current`. Collecting the flow opens the connection; cancelling the

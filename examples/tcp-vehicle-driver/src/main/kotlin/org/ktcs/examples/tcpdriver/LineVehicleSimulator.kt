@@ -72,7 +72,9 @@ class LineVehicleSimulator(
         val message = LineProtocol.parse(line)
         when (message.name) {
             "COMMAND" -> commands.put(message.fields)
+
             "CLEAR" -> commands.clear()
+
             "MESSAGE" -> send(
                 LineProtocol.property("tcp:lastMessage", message.fields[0]),
                 LineProtocol.event("messageReceived", mapOf("type" to message.fields[0])),

@@ -21,7 +21,9 @@ class TcpVehicleDriverFactory : VehicleDriverFactory {
     override fun create(vehicleName: String, context: DriverContext): VehicleDriver {
         val properties = context.vehicle().properties
         val port = properties[PORT]?.toIntOrNull()?.takeIf { it in 1..MAX_PORT }
-            ?: throw IllegalArgumentException("vehicle $vehicleName: $PORT must be a TCP port, was '${properties[PORT]}'")
+            ?: throw IllegalArgumentException(
+                "vehicle $vehicleName: $PORT must be a TCP port, was '${properties[PORT]}'",
+            )
         val capacity = properties[CAPACITY]?.let {
             it.toIntOrNull()?.takeIf { value -> value > 0 }
                 ?: throw IllegalArgumentException("vehicle $vehicleName: $CAPACITY must be positive, was '$it'")

@@ -103,7 +103,10 @@ class TcpVehicleDriverTest : FunSpec({
     }
 
     test("a withdrawn order clears the vehicle's command queue") {
-        kernel.post("/transportOrders/T2", """{"destinations":[{"locationName":"Goods out 01","operation":"Unload cargo"}]}""")
+        kernel.post(
+            "/transportOrders/T2",
+            """{"destinations":[{"locationName":"Goods out 01","operation":"Unload cargo"}]}""",
+        )
         vehicle.receive() shouldStartWith "COMMAND|"
         kernel.post("/transportOrders/T2/withdrawal?immediate=true", "")
         generateSequence { vehicle.receive() }.first { !it.startsWith("COMMAND|") } shouldBe "CLEAR"
