@@ -20,7 +20,7 @@ import java.util.concurrent.TimeUnit
  * checked after each event in kernel order.
  */
 class PlantFollower(webBase: String) : AutoCloseable {
-    private val allocated = mutableMapOf<String, Set<String>>()
+    private val ledger = AllocationLedger()
     private val orderStates = ConcurrentHashMap<String, String>()
     private val processors = ConcurrentHashMap<String, String>()
     val doubleAllocations: MutableList<String> = CopyOnWriteArrayList()
@@ -76,18 +76,10 @@ class PlantFollower(webBase: String) : AutoCloseable {
             }
 
             "vehicles" -> {
-                allocated[name] = (current["allocatedResources"] as JsonArray)
+                val resources = (current["allocatedResources"] as JsonArray)
                     .flatMap { step -> step.jsonArray.map { it.jsonPrimitive.content } }.toSet()
-                checkExclusive()
+                ledger.update(name, resources).forEach { doubleAllocations += "after event $eventCount: $it" }
             }
-        }
-    }
-
-    private fun checkExclusive() {
-        val holders = allocated.flatMap { (vehicle, resources) -> resources.map { it to vehicle } }
-            .groupBy({ it.first }, { it.second })
-        holders.filterValues { it.size > 1 }.forEach { (resource, vehicles) ->
-            doubleAllocations += "after event $eventCount: $resource held by ${vehicles.sorted()}"
         }
     }
 

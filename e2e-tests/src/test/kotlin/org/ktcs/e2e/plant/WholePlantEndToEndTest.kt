@@ -66,6 +66,10 @@ class WholePlantEndToEndTest : FunSpec({
                     orders.mapNotNull { follower.processorOf(it) } shouldContain "Tcp-01"
                     simulator.executed shouldBeGreaterThan 0
                     status.finishedOrders(orders.filter { it.startsWith("TOrder-") }.toSet())
+                    println(
+                        "whole plant: ${orders.size} orders finished, ${follower.eventCount} WebSocket events, " +
+                            "Tcp-01 carried out ${simulator.executed} commands",
+                    )
                 }
                 ktcs.terminate() shouldBe 0
                 withClue("kTCS logged errors") {

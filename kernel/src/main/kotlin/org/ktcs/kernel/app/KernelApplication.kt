@@ -61,7 +61,9 @@ class KernelApplication(
         // Extensions that start at once (the XML channels) are created after the kernel started, so their first
         // request finds it running.
         val app = koinApplication(createEagerInstances = false) {
-            slf4jLogger(Level.ERROR)
+            // Koin would log a failing definition with its stack trace before start() reports it in one line (naming
+            // the extension, with the causes); a failure that is not an extension's keeps its stack trace there.
+            slf4jLogger(Level.NONE)
             modules(kernelModule(config, loaded.model, context), applicationModule())
             extensions.forEach { extension -> modules(moduleOf(extension)) }
         }
