@@ -3,6 +3,7 @@ plugins {
 }
 
 dependencies {
+    implementation(project(":api"))
     implementation(libs.ktor.client.core)
     implementation(libs.ktor.client.cio)
     implementation(libs.ktor.client.websockets)
