@@ -6,19 +6,27 @@ import io.kotest.matchers.ints.shouldBeLessThanOrEqual
 import io.kotest.matchers.nulls.shouldBeNull
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldStartWith
+import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.async
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.filterIsInstance
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.withTimeout
 import kotlinx.serialization.json.int
 import kotlinx.serialization.json.jsonObject
 import kotlinx.serialization.json.jsonPrimitive
+import org.ktcs.api.event.DriverEvent
 import org.ktcs.kernel.app.KernelApplication
 import org.ktcs.kernel.app.LoadedModel
 import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.services.StandardKernelServices
 import kotlin.time.Duration.Companion.seconds
 
 /**
  * The driver in a real kernel, with the test playing the vehicle over a real socket: commands arrive numbered and
  * never more than the queue holds, reports of position and energy reach the kernel, a client's message reaches the
- * vehicle, and the vehicle's properties reach the client.
+ * vehicle, and the vehicle's properties reach the client and its events the kernel's event stream.
  */
 class TcpVehicleDriverTest : FunSpec({
     val vehicle = PlayedVehicle()
@@ -100,6 +108,22 @@ class TcpVehicleDriverTest : FunSpec({
         }
         vehicle.send("PROPERTY|firmware|")
         eventually(10.seconds) { tcpVehicle()["properties"]!!.jsonObject["firmware"].shouldBeNull() }
+    }
+
+    test("the vehicle's events reach the kernel's event stream") {
+        val services = StandardKernelServices(application.kernel)
+        val event = withTimeout(10.seconds) {
+            coroutineScope {
+                val first = async(start = CoroutineStart.UNDISPATCHED) {
+                    services.events().filterIsInstance<DriverEvent>().first()
+                }
+                vehicle.send("EVENT|bumper|side=left|force=3")
+                first.await()
+            }
+        }
+        event.vehicle shouldBe "Tcp-01"
+        event.type shouldBe "bumper"
+        event.payload shouldBe mapOf("side" to "left", "force" to "3")
     }
 
     test("a withdrawn order clears the vehicle's command queue") {
