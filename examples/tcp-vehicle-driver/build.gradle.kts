@@ -4,5 +4,4 @@ plugins {
 
 dependencies {
     implementation(project(":kernel"))
-    testImplementation(project(":adapters-loopback"))
 }
