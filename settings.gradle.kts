@@ -15,5 +15,9 @@ include(
     "adapters-loopback",
     "web-overview",
     "xml-channels",
+    "examples:tcp-vehicle-driver",
+    "examples:nearest-vehicle-dispatcher",
+    "examples:overview-panel-theme",
+    "examples:kotlin-clients",
     "e2e-tests",
 )

@@ -7,6 +7,7 @@ dependencies {
     testImplementation(project(":adapters-loopback"))
     testImplementation(project(":web-overview"))
     testImplementation(project(":xml-channels"))
+    testImplementation(project(":examples:tcp-vehicle-driver"))
 }
 
 tasks.test {

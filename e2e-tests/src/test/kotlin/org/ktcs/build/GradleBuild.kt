@@ -45,7 +45,7 @@ class GradleBuild(
         // platform(...) mirrors a BOM import in <dependencyManagement>, not a <dependency>.
         if (argument.startsWith("platform(") || argument.startsWith("enforcedPlatform(")) return null
         fun match(regex: Regex) = regex.find(argument)?.groupValues?.get(1)
-        return match(PROJECT)?.let { ":$it" }
+        return match(PROJECT)?.let { ":" + it.replace(':', '/') }
             ?: match(FIND_LIBRARY)?.let { catalog.libraries[it] ?: "$it (not in the catalog)" }
             ?: match(KOTLIN_MODULE)?.let { "org.jetbrains.kotlin:kotlin-$it" }
             ?: match(ACCESSOR)?.let { catalog.libraryFor(it) ?: "libs.$it (not in the catalog)" }
@@ -78,22 +78,29 @@ class GradleBuild(
             "testRuntimeOnly" to "test",
         )
 
-        /** Reads settings, catalog, the build file in each top directory and the buildSrc convention plugins. */
+        /**
+         * Reads settings, catalog, the build file of each top directory and of each included module (nested ones
+         * such as `examples/tcp-vehicle-driver` too) and the buildSrc convention plugins.
+         */
         fun read(root: Path): GradleBuild {
             val conventionDir = root.resolve("buildSrc/src/main/kotlin")
             val conventions = conventionDir.takeIf { it.exists() }?.listDirectoryEntries("*.gradle.kts").orEmpty()
+            val settings = root.resolve("settings.gradle.kts").readText()
+            val moduleDirectories = root.listDirectoryEntries().map { it.name } + includedModules(settings)
             return GradleBuild(
-                root.resolve("settings.gradle.kts").readText(),
+                settings,
                 root.resolve("gradle/libs.versions.toml").readText(),
-                root.listDirectoryEntries().map { it.resolve("build.gradle.kts") }.filter { it.exists() }
-                    .associate { it.parent.name to it.readText() },
+                moduleDirectories.distinct().map { it to root.resolve(it).resolve("build.gradle.kts") }
+                    .filter { (_, file) -> file.exists() }
+                    .associate { (module, file) -> module to file.readText() },
                 conventions.associate { it.name.removeSuffix(".gradle.kts") to it.readText() },
             )
         }
 
+        /** The included modules as directories: Gradle's `examples:tcp-vehicle-driver` is `examples/tcp-vehicle-driver`. */
         private fun includedModules(settings: String): List<String> =
             INCLUDE.findAll(code(settings)).flatMap { include ->
-                QUOTED.findAll(include.groupValues[1]).map { it.groupValues[1].removePrefix(":") }
+                QUOTED.findAll(include.groupValues[1]).map { it.groupValues[1].removePrefix(":").replace(':', '/') }
             }.toList()
 
         /** The script without `//` comments, so commented-out lines don't count. */

@@ -13,6 +13,9 @@ sealed interface Command {
     /** Print the documented config file with every default. */
     data object ConfigTemplate : Command
 
+    /** Print the configuration reference page (docs/configuration.md). */
+    data object ConfigReference : Command
+
     /** Check a plant-model file and print a summary. */
     data class CheckModel(val file: Path) : Command
 
@@ -47,6 +50,7 @@ object CommandLine {
         |Usage: ktcs [run] [--model FILE] [--config FILE] [--set key=value]...
         |       ktcs config [--config FILE] [--set key=value]...   print the effective configuration
         |       ktcs config defaults                               print a config file listing every default
+        |       ktcs config reference                              print the configuration reference (Markdown)
         |       ktcs model check FILE                              check a plant-model file
         |       ktcs model convert IN OUT                          convert a plant-model file to version 7.0.0
         |       ktcs simulate [--model FILE | --grid WxH] [--vehicles N] [--orders M] [--seed S] [--virtual-time]
@@ -61,12 +65,10 @@ object CommandLine {
 
         "run" -> Command.Run(parseRunOptions(args.drop(1)))
 
-        "config" -> if (args.getOrNull(1) ==
-            "defaults"
-        ) {
-            Command.ConfigTemplate
-        } else {
-            Command.ShowConfig(parseRunOptions(args.drop(1)))
+        "config" -> when (args.getOrNull(1)) {
+            "defaults" -> Command.ConfigTemplate
+            "reference" -> Command.ConfigReference
+            else -> Command.ShowConfig(parseRunOptions(args.drop(1)))
         }
 
         "model" -> parseModelCommand(args.drop(1))

@@ -10,13 +10,17 @@ import org.ktcs.kernel.config.KtcsConfig
 import org.ktcs.kernel.context.RealTimeKernelContext
 import org.ktcs.kernel.core.KernelCore
 import org.ktcs.kernel.extension.ExtensionException
+import org.ktcs.kernel.extension.ExtensionFailures
 import org.ktcs.kernel.extension.KtcsExtension
 import org.ktcs.kernel.extension.ServedAddresses
+import org.ktcs.kernel.extension.describe
+import org.ktcs.kernel.extension.from
 import org.ktcs.kernel.kernelModule
 import org.ktcs.kernel.web.KernelVersion
 import org.ktcs.kernel.web.ShutdownRequest
 import org.ktcs.kernel.web.WebServer
 import org.slf4j.LoggerFactory
+import java.nio.file.Path
 
 /**
  * The kernel application: wires the kernel and its extensions with Koin and serves them. One instance per process;
@@ -26,27 +30,47 @@ class KernelApplication(
     private val config: KtcsConfig,
     private val loaded: LoadedModel,
     private val extensions: List<KtcsExtension>,
+    /** The jar an extension came from (for the ready line and error messages), `null` for the class path. */
+    private val jarOf: (KtcsExtension) -> Path? = { null },
     private val shutdownRequest: ShutdownRequest = ShutdownRequest {},
 ) {
     private val log = LoggerFactory.getLogger(KernelApplication::class.java)
     private var koin: KoinApplication? = null
     private val context = RealTimeKernelContext()
+    private var coreStarted = false
 
     /** The kernel, once started. */
     val kernel: KernelCore get() = checkNotNull(koin) { "kTCS is not started" }.koin.get()
 
-    /** Starts everything and returns the line announcing readiness (also logged). */
-    fun start(): String {
+    /**
+     * Starts everything and returns the line announcing readiness (also logged). If anything fails, what was
+     * started is stopped again (the web server never listens) and an extension's failure is an [ExtensionException]
+     * naming it.
+     */
+    fun start(): String = try {
+        startAll()
+    } catch (error: Exception) {
+        abandon(error)
+        throw ExtensionFailures(extensions, jarOf).explain(error)
+    } catch (error: LinkageError) {
+        abandon(error)
+        throw ExtensionFailures(extensions, jarOf).explain(error)
+    }
+
+    private fun startAll(): String {
         // Extensions that start at once (the XML channels) are created after the kernel started, so their first
         // request finds it running.
         val app = koinApplication(createEagerInstances = false) {
-            slf4jLogger(Level.ERROR)
+            // Koin would log a failing definition with its stack trace before start() reports it in one line (naming
+            // the extension, with the causes); a failure that is not an extension's keeps its stack trace there.
+            slf4jLogger(Level.NONE)
             modules(kernelModule(config, loaded.model, context), applicationModule())
             extensions.forEach { extension -> modules(moduleOf(extension)) }
         }
         koin = app
         val core = app.koin.get<KernelCore>()
         runBlocking { context.call { core.start() } }
+        coreStarted = true
         app.createEagerInstances()
         val webAddress = app.koin.get<WebServer>().start()
         val ready =
@@ -64,7 +88,21 @@ class KernelApplication(
             app.close()
         }
         koin = null
+        coreStarted = false
         log.info("kTCS stopped")
+    }
+
+    /** Stops what [start] started before it failed; later failures are kept as suppressed ones. */
+    private fun abandon(failure: Throwable) {
+        val app = koin ?: return
+        koin = null
+        if (coreStarted) {
+            val core = app.koin.get<KernelCore>()
+            runCatching { runBlocking { context.call { core.stop() } } }.exceptionOrNull()?.let(failure::addSuppressed)
+        }
+        coreStarted = false
+        runCatching { context.close() }.exceptionOrNull()?.let(failure::addSuppressed)
+        runCatching { app.close() }.exceptionOrNull()?.let(failure::addSuppressed)
     }
 
     private fun applicationModule() = module {
@@ -75,12 +113,19 @@ class KernelApplication(
     private fun moduleOf(extension: KtcsExtension) = try {
         extension.module()
     } catch (error: RuntimeException) {
-        throw ExtensionException("extension '${extension.name}' failed to provide its module: ${error.message}", error)
+        throw moduleFailure(extension, error)
+    } catch (error: LinkageError) {
+        throw moduleFailure(extension, error)
     }
+
+    private fun moduleFailure(extension: KtcsExtension, error: Throwable) = ExtensionException(
+        "extension '${extension.name}'${jarOf(extension).from()} failed to provide its module: ${error.describe()}",
+        error,
+    )
 
     private fun readyLine(addresses: List<String>): String {
         val model = loaded.model
-        val extensionNames = extensions.joinToString { it.name }.ifEmpty { "none" }
+        val extensionNames = extensions.joinToString { it.name + jarOf(it).from() }.ifEmpty { "none" }
         return "kTCS ready: model '${model.name}' from ${loaded.source} (${model.summary()}); " +
             "${addresses.joinToString("; ")}; extensions: $extensionNames"
     }

@@ -4,8 +4,10 @@ import org.ktcs.kernel.config.ConfigException
 import org.ktcs.kernel.config.ConfigFile
 import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.kernel.config.KtcsConfig
+import org.ktcs.kernel.config.KtcsSettings
 import org.ktcs.kernel.extension.ExtensionException
 import org.ktcs.kernel.extension.Extensions
+import org.ktcs.kernel.extension.InstalledExtensions
 import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.persistence.ModelFileException
 import org.ktcs.kernel.simulation.Fleet
@@ -23,6 +25,7 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
             is Command.Run -> runKernel(command.options, awaitShutdown)
             is Command.ShowConfig -> 0.also { out.println(ConfigFile.describe(config(command.options))) }
             Command.ConfigTemplate -> 0.also { out.print(ConfigFile.render()) }
+            Command.ConfigReference -> 0.also { out.print(ConfigReference.render()) }
             is Command.Simulate -> simulate(command.options)
             is Command.CheckModel -> ModelTools(out).check(command.file)
             is Command.ConvertModel -> ModelTools(out).convert(command.input, command.output)
@@ -43,13 +46,17 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
         val waitForShutdown = awaitShutdown ?: signal!!::await
         val config = config(options)
         Logging.apply(config)
-        val application =
-            KernelApplication(config, PlantModelLoader.load(options.model), Extensions.discover()) { signal?.request() }
-        application.start()
-        try {
-            waitForShutdown()
-        } finally {
-            application.stop()
+        val model = PlantModelLoader.load(options.model)
+        val installed = extensions(config)
+        withContextClassLoader(installed.classLoader) {
+            val application =
+                KernelApplication(config, model, installed.extensions, installed::jarOf) { signal?.request() }
+            application.start()
+            try {
+                waitForShutdown()
+            } finally {
+                application.stop()
+            }
         }
         return 0
     }
@@ -68,9 +75,33 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
             options.grid?.let { (width, height) -> GridPlant(width, height).build() }
                 ?: PlantModelLoader.load(options.run.model).model
         val model = Fleet.withVehicles(plant, options.vehicles ?: plant.vehicles.size.coerceAtLeast(1))
-        val report = SimulationRunner(model, config, Extensions.discover(), options.orders, options.seed).run()
+        val installed = extensions(config)
+        val report = withContextClassLoader(installed.classLoader) {
+            SimulationRunner(model, config, installed.extensions, options.orders, options.seed).run()
+        }
         report.lines().forEach(out::println)
         return if (report.ordersFinished == report.ordersCreated && report.doubleAllocations == 0) 0 else EXIT_FAILURE
+    }
+
+    /** The extensions on the class path and in `extensions.directory` (required there if set explicitly). */
+    private fun extensions(config: KtcsConfig): InstalledExtensions {
+        val setting = KtcsSettings.extensionsDirectory
+        return Extensions.load(Path.of(config[setting]), required = config.sourceOf(setting) != "default")
+    }
+
+    /**
+     * Runs [block] with [loader] as the thread's context class loader, which threads started in it inherit: drivers
+     * listed as plain `VehicleDriverFactory` services are found through it, so it must see the extension jars.
+     */
+    private fun <T> withContextClassLoader(loader: ClassLoader, block: () -> T): T {
+        val thread = Thread.currentThread()
+        val previous = thread.contextClassLoader
+        thread.contextClassLoader = loader
+        try {
+            return block()
+        } finally {
+            thread.contextClassLoader = previous
+        }
     }
 
     private fun config(options: RunOptions): KtcsConfig {

@@ -250,6 +250,13 @@ object KtcsSettings {
             "or one an extension adds).",
     )
 
+    val extensionsDirectory = stringSetting(
+        "extensions.directory",
+        "extensions",
+        "Directory of extension jars loaded at start (relative to the working directory); a missing directory is " +
+            "fine unless set explicitly.",
+    )
+
     val all: List<Setting<*>> = listOf(
         webBindAddress,
         webPort,
@@ -293,6 +300,7 @@ object KtcsSettings {
         loopbackPositionReportInterval,
         overviewVehicleTheme,
         overviewLocationTheme,
+        extensionsDirectory,
     )
 }
 

@@ -18,6 +18,13 @@ class CommandLineTest : FunSpec({
             Command.Run(RunOptions(Path.of("a.xml"), Path.of("b.conf"), listOf("web.port=1", "xml.orders.port=2")))
     }
 
+    test("config commands") {
+        CommandLine.parse(listOf("config", "defaults")) shouldBe Command.ConfigTemplate
+        CommandLine.parse(listOf("config", "reference")) shouldBe Command.ConfigReference
+        CommandLine.parse(listOf("config", "--set", "web.port=1")) shouldBe
+            Command.ShowConfig(RunOptions(overrides = listOf("web.port=1")))
+    }
+
     test("model tools") {
         CommandLine.parse(listOf("model", "check", "m.xml")) shouldBe Command.CheckModel(Path.of("m.xml"))
         CommandLine.parse(listOf("model", "convert", "in.xml", "out.xml")) shouldBe

@@ -1,5 +1,8 @@
 package org.ktcs.kernel.app
 
+import com.example.extensions.DispatcherFailingExtension
+import com.example.extensions.MissingClassExtension
+import com.example.extensions.WorkingExtension
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.shouldBe
@@ -67,5 +70,35 @@ class KernelApplicationTest : FunSpec({
             KernelApplication(localConfig, PlantModelLoader.loadDemo(), listOf(broken)).start()
         }
         error.message shouldBe "extension 'broken-driver' failed to provide its module: missing configuration"
+    }
+
+    test("an extension whose definition fails at start is named, and nothing keeps running") {
+        val port = java.net.ServerSocket(0).use { it.localPort }
+        val config = ConfigLoader().load(null, emptyMap(), listOf("web.bindAddress=127.0.0.1", "web.port=$port"))
+        val error = shouldThrow<ExtensionException> {
+            KernelApplication(config, PlantModelLoader.loadDemo(), listOf(DispatcherFailingExtension())).start()
+        }
+        error.message shouldStartWith "extension 'failing-dispatcher' failed to start: "
+        error.message shouldContain "no dispatcher licence"
+        shouldThrow<ConnectException> { get("http://127.0.0.1:$port/v1/kernel/version") }
+    }
+
+    test("an extension whose module needs a missing class is named with the class") {
+        val error = shouldThrow<ExtensionException> {
+            KernelApplication(localConfig, PlantModelLoader.loadDemo(), listOf(MissingClassExtension())).start()
+        }
+        error.message shouldBe
+            "extension 'missing-class' failed to provide its module: com/example/vendor/VendorProtocol"
+    }
+
+    test("the ready line says which jar an extension came from") {
+        val jar = java.nio.file.Path.of("extensions", "working.jar")
+        val application =
+            KernelApplication(localConfig, PlantModelLoader.loadDemo(), listOf(WorkingExtension()), { jar })
+        try {
+            application.start() shouldContain "extensions: working (from $jar)"
+        } finally {
+            application.stop()
+        }
     }
 })

@@ -115,4 +115,21 @@ class KtcsTest : FunSpec({
         run.exitCode shouldBe 1
         run.err.trim() shouldBe "ktcs: error: --set web.port: bad value '-1' for web.port: must be between 0 and 65535"
     }
+
+    test("a configured extensions directory that does not exist stops the start with one line, exit 1") {
+        val missing = Files.createTempDirectory("ktcs").resolve("plugins")
+        val run = ktcs("--set", "web.port=0", "--set", "extensions.directory=$missing")
+        run.exitCode shouldBe 1
+        run.err.trim() shouldBe
+            "ktcs: error: extensions directory '$missing' (extensions.directory) does not exist"
+    }
+
+    test("a broken extension jar stops the start with one line naming it, exit 1") {
+        val extensions = Files.createTempDirectory("ktcs-extensions")
+        val broken = extensions.resolve("broken.jar")
+        Files.writeString(broken, "not a jar")
+        val run = ktcs("--set", "web.port=0", "--set", "extensions.directory=$extensions")
+        run.exitCode shouldBe 1
+        run.err shouldStartWith "ktcs: error: extension jar '$broken' cannot be read"
+    }
 })

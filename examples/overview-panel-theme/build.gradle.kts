@@ -1,0 +1,7 @@
+plugins {
+    id("ktcs.kotlin-jvm")
+}
+
+dependencies {
+    implementation(project(":kernel"))
+}
