@@ -10,18 +10,24 @@ import org.slf4j.LoggerFactory
 
 /**
  * Looks for vehicles that wait for each other in a cycle, reports each deadlock once (user notification and log
- * line naming vehicles and resources) and breaks it by routing one of the vehicles around what blocks it.
+ * line naming vehicles and resources) and breaks it by routing one of the vehicles around what blocks it. Also sends
+ * idle vehicles that stand in a waiting vehicle's way elsewhere ([IdleBlockers]).
  * The check costs in proportion to the waiting vehicles, not the plant.
  */
 class DeadlockWatchdog(private val kernel: KernelCore) {
     private val log = LoggerFactory.getLogger(DeadlockWatchdog::class.java)
     private var next: Cancellable? = null
     private var reported = emptySet<Set<String>>()
+    private var unresolved = emptySet<Set<String>>()
+    private val idleBlockers = IdleBlockers(kernel)
 
     var detected = 0
         private set
     var resolved = 0
         private set
+
+    /** How many idle vehicles were sent out of the way of waiting ones. */
+    val idleVehiclesMoved: Int get() = idleBlockers.moved
 
     fun start() {
         val interval = kernel.options.deadlockCheckIntervalMillis
@@ -43,18 +49,32 @@ class DeadlockWatchdog(private val kernel: KernelCore) {
             ?: WaitForGraph.of(kernel.scheduler.allocations(), kernel.scheduler.pendingAllocations())
         val deadlocks = DeadlockDetector.detect(graph)
         val current = deadlocks.mapTo(HashSet()) { it.vehicles.toSet() }
-        deadlocks.filter { it.vehicles.toSet() !in reported }.forEach { deadlock ->
-            detected++
-            report(deadlock)
+        // Each deadlock is reported once, but breaking it is tried at every check for as long as it lasts: a vehicle
+        // that could not be routed around it before may be now.
+        val stillUnresolved = HashSet<Set<String>>()
+        deadlocks.forEach { deadlock ->
+            val vehicles = deadlock.vehicles.toSet()
+            val new = vehicles !in reported
+            if (new) {
+                detected++
+                report(deadlock)
+            } else if (vehicles !in unresolved) {
+                return@forEach
+            }
             if (DeadlockDetector.resolutions(deadlock, graph).any {
                     kernel.controllers.controller(it.vehicle).reroute(it.resourcesToAvoid)
                 }
             ) {
                 resolved++
                 log.info("deadlock resolved by rerouting: vehicles={}", deadlock.vehicles)
+            } else {
+                if (new) log.warn("deadlock not resolved yet, no way around it: vehicles={}", deadlock.vehicles)
+                stillUnresolved += vehicles
             }
         }
         reported = current
+        unresolved = stillUnresolved
+        idleBlockers.check(graph)
     }
 
     private fun report(deadlock: Deadlock) {

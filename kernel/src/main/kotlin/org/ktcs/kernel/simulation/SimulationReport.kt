@@ -15,6 +15,7 @@ data class SimulationReport(
     val routeComputations: Int,
     val deadlocksDetected: Int,
     val deadlocksResolved: Int,
+    val idleVehiclesMoved: Int,
     val doubleAllocations: Int,
     val sharedPositions: Int,
 ) {
@@ -37,6 +38,7 @@ data class SimulationReport(
         "route_p99_ms: ${"%.3f".format(routeMillis.p99)}",
         "deadlocks_detected: $deadlocksDetected",
         "deadlocks_resolved: $deadlocksResolved",
+        "idle_vehicles_moved: $idleVehiclesMoved",
         "double_allocations: $doubleAllocations",
         "shared_positions: $sharedPositions",
     )

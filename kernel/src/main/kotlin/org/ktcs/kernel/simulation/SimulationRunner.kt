@@ -99,6 +99,7 @@ class SimulationRunner(
                 routeComputations = router.durationsNanos.size,
                 deadlocksDetected = kernel.core.watchdog.detected,
                 deadlocksResolved = kernel.core.watchdog.resolved,
+                idleVehiclesMoved = kernel.core.watchdog.idleVehiclesMoved,
                 doubleAllocations = audit.doubleAllocations,
                 sharedPositions = audit.sharedPositions,
             )
