@@ -43,6 +43,13 @@ object KtcsSettings {
         1L..10_000L,
         "The largest request body the web API reads, in MB; larger ones get 413.",
     )
+    val webSocketBufferSize = intSetting(
+        "web.webSocketBufferSize",
+        1000,
+        1..1_000_000,
+        "Events queued for one WebSocket client; a client that falls further behind is told it missed events and " +
+            "gets fresh snapshots.",
+    )
     val xmlOrdersPort =
         intSetting("xml.orders.port", 55555, 0..MAX_PORT, "TCP port of the XML order channel (0: any free port).")
     val xmlStatusPort =
@@ -263,6 +270,7 @@ object KtcsSettings {
         webAccessKey,
         webAllowedOrigins,
         webMaxRequestBodySize,
+        webSocketBufferSize,
         xmlOrdersPort,
         xmlStatusPort,
         xmlBindAddress,

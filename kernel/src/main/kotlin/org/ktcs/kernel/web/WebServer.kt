@@ -40,9 +40,8 @@ import org.slf4j.LoggerFactory
 data class WebOptions(
     val accessKey: String = "",
     val allowedOrigins: String = "*",
-    val maxRequestBodyBytes: Long = 200L *
-        1024 *
-        1024,
+    val maxRequestBodyBytes: Long = 200L * 1024 * 1024,
+    val webSocketBufferSize: Int = 1000,
 )
 
 /** Asks the application to shut down, as `DELETE /v1/kernel` does. */
@@ -67,6 +66,7 @@ class WebServer(
             accessKey = config[KtcsSettings.webAccessKey],
             allowedOrigins = config[KtcsSettings.webAllowedOrigins],
             maxRequestBodyBytes = config[KtcsSettings.webMaxRequestBodySize] * 1024 * 1024,
+            webSocketBufferSize = config[KtcsSettings.webSocketBufferSize],
         )
         val started = embeddedServer(CIO, port = config[KtcsSettings.webPort], host = host) {
             webModule(version, services, options, shutdown, contributions)
@@ -111,7 +111,7 @@ fun Application.webModule(
             vehicleRoutes(services)
             plantModelRoutes(services)
             eventRoutes(services, statusEvents)
-            webSocketRoutes(services)
+            webSocketRoutes(services, options.webSocketBufferSize)
             post("/dispatcher/trigger") {
                 services.dispatcher.dispatch()
                 call.respond(HttpStatusCode.OK)

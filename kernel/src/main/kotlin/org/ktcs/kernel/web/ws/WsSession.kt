@@ -100,5 +100,8 @@ class WsSession(
 
     private suspend fun send(message: WsServerMessage) {
         socket.send(Frame.Text(json.encodeToString(WsServerMessage.serializer(), message)))
+        // Sending only queues the frame, without limit; waiting for it to be written is what lets a client that
+        // reads slowly hold this session up, so that its event buffer fills and it is told it missed events.
+        socket.flush()
     }
 }
