@@ -103,7 +103,9 @@ class BrowserOverview(private val web: String, private val model: PlantModel) {
         const val ORDER = "Browser-1"
         const val SCREENSHOT = "whole-plant"
         private const val WAIT_TIMEOUT_MS = 20_000.0
-        private const val FINISH_TIMEOUT_MS = 40_000.0
+
+        // The order queues behind the REST and XML orders: it finished about 31 s after creation on 2 shared cores.
+        private const val FINISH_TIMEOUT_MS = 50_000.0
 
         // The page reports a panel or theme that fails to load only as an error toast, which vanishes after 15 s.
         private val RECORD_ERROR_MESSAGES = """

@@ -141,7 +141,11 @@ private class Activity(val name: String, body: () -> Unit) {
         }
     }
 
-    fun join() = worker.join(60_000)
+    /** Waits for the activity to end; one still running after 60 s counts as failed, lest its checks go unseen. */
+    fun join() {
+        worker.join(60_000)
+        if (worker.isAlive) failures += "$name: still running after 60 s"
+    }
 }
 
 private fun activity(name: String, body: () -> Unit) = Activity(name, body)
