@@ -7,6 +7,7 @@ import java.nio.file.Path
 /** The packaged example extensions, as the build leaves them (e2e-tests depends on their modules for the order). */
 object ExampleJars {
     val tcpVehicleDriver: Path get() = jar("tcp-vehicle-driver")
+    val overviewPanelTheme: Path get() = jar("overview-panel-theme")
 
     private fun jar(example: String): Path {
         val jar = RepositoryRoot.path.resolve("examples/$example/target/ktcs-example-$example.jar")

@@ -7,6 +7,7 @@ import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.ints.shouldBeGreaterThan
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
+import org.ktcs.api.model.PlantModel
 import org.ktcs.e2e.KtcsProcess
 import org.ktcs.examples.tcpdriver.LineVehicleSimulator
 import org.ktcs.examples.tcpdriver.TcpVehicleDriverFactory
@@ -26,20 +27,25 @@ import kotlin.time.Duration.Companion.seconds
 /**
  * The packaged application (`./ktcs`) with the demo plant, its four loopback vehicles and a fifth vehicle driven by
  * the example TCP driver, loaded from a jar in the extensions directory, whose vehicle the example's simulator
- * plays. At the same time: orders over REST, orders as XML telegrams, the WebSocket and the XML status channel
- * followed. Every order finishes, no resource is ever held by two vehicles, the TCP vehicle does its share and
- * nothing is logged as an error.
+ * plays; the example overview panel and theme come from a second jar there. At the same time: orders over REST,
+ * orders as XML telegrams, an order from the browser overview's dialog (in headless Chromium, left out with the
+ * reason printed where Chromium is missing), the WebSocket and the XML status channel followed. Every order
+ * finishes, no resource is ever held by two vehicles, the TCP vehicle does its share and nothing is logged as an
+ * error.
  */
 class WholePlantEndToEndTest : FunSpec({
-    test("REST and XML orders all finish on a plant with an extension's vehicle, without double allocations") {
+    test("REST, XML and browser orders all finish on a plant with extension jars, without double allocations") {
         val directory = Files.createTempDirectory("ktcs-whole-plant")
         val extensions = Files.createDirectories(directory.resolve("extensions"))
         Files.copy(ExampleJars.tcpVehicleDriver, extensions.resolve("ktcs-example-tcp-vehicle-driver.jar"))
+        Files.copy(ExampleJars.overviewPanelTheme, extensions.resolve("ktcs-example-overview-panel-theme.jar"))
         LineVehicleSimulator("Point-0027", travelMillis = 150, operationMillis = 300).use { simulator ->
-            val model = writeModelWithTcpVehicle(directory.resolve("plant.xml"), simulator.port)
-            KtcsProcess(*arguments(model, extensions)).use { ktcs ->
+            val model = modelWithTcpVehicle(simulator.port)
+            val modelFile = directory.resolve("plant.xml").also { PlantModelFiles.write(model, it) }
+            KtcsProcess(*arguments(modelFile, extensions)).use { ktcs ->
                 val ready = ktcs.awaitLine("kTCS ready")
                 ready shouldContain "tcp-vehicle-driver (from $extensions/ktcs-example-tcp-vehicle-driver.jar)"
+                ready shouldContain "overview-examples (from $extensions/ktcs-example-overview-panel-theme.jar)"
                 val web = Regex("web API (http://\\S+)/v1").find(ready)!!.groupValues[1]
                 val xmlOrders = Regex("XML orders tcp://\\S+:(\\d+)").find(ready)!!.groupValues[1].toInt()
                 val xmlStatus = Regex("XML status tcp://\\S+:(\\d+)").find(ready)!!.groupValues[1].toInt()
@@ -48,11 +54,10 @@ class WholePlantEndToEndTest : FunSpec({
                     follower.awaitSnapshots()
                     val orders = CopyOnWriteArrayList<String>()
                     val status = StatusChannelFollower(xmlStatus)
-                    val activities = listOf(
+                    val activities = listOfNotNull(
                         activity("REST orders") { orders += RestOrders(web).createAll() },
                         activity("XML telegram") { orders += sendXmlTelegram(xmlOrders) },
-                        // BROWSER OVERVIEW: the lead adds an activity here that drives the browser overview at
-                        // "$web/overview" (with web-overview's Playwright helpers) while the orders run.
+                        browserActivity(web, model) { orders += it },
                     )
                     activities.forEach { it.join() }
                     activities.flatMap { it.failures }.shouldBeEmpty()
@@ -80,6 +85,16 @@ class WholePlantEndToEndTest : FunSpec({
     }
 })
 
+/** The browser overview as an order source, or nothing (with the reason printed) where Chromium is missing. */
+private fun browserActivity(web: String, model: PlantModel, onOrderCreated: (String) -> Unit): Activity? {
+    val skipReason = Chromium.skipReason()
+    if (skipReason != null) {
+        println("whole plant: browser overview left out: $skipReason")
+        return null
+    }
+    return activity("browser overview") { BrowserOverview(web, model).visit(onOrderCreated) }
+}
+
 private val ERROR_LINE = Regex("""\sERROR\s""")
 
 private fun arguments(model: Path, extensions: Path): Array<String> = (
@@ -91,12 +106,13 @@ private fun arguments(model: Path, extensions: Path): Array<String> = (
             "xml.orders.port=0",
             "xml.status.port=0",
             "loopback.timeFactor=10",
+            "overview.vehicleTheme=energy",
             "extensions.directory=$extensions",
         ).flatMap { listOf("--set", it) }
     ).toTypedArray()
 
 /** The demo plant plus the vehicle "Tcp-01", driven by the example TCP driver, its vehicle listening on [port]. */
-private fun writeModelWithTcpVehicle(file: Path, port: Int): Path {
+private fun modelWithTcpVehicle(port: Int): PlantModel {
     val demo = PlantModelLoader.loadDemo().model
     val tcpVehicle = demo.vehicles.first().copy(
         name = "Tcp-01",
@@ -105,8 +121,7 @@ private fun writeModelWithTcpVehicle(file: Path, port: Int): Path {
             TcpVehicleDriverFactory.PORT to port.toString(),
         ),
     )
-    PlantModelFiles.write(demo.copy(vehicles = demo.vehicles + tcpVehicle), file)
-    return file
+    return demo.copy(vehicles = demo.vehicles + tcpVehicle)
 }
 
 private fun awaitAllFinal(follower: PlantFollower, orders: List<String>) {
@@ -126,7 +141,11 @@ private class Activity(val name: String, body: () -> Unit) {
         }
     }
 
-    fun join() = worker.join(60_000)
+    /** Waits for the activity to end; one still running after 60 s counts as failed, lest its checks go unseen. */
+    fun join() {
+        worker.join(60_000)
+        if (worker.isAlive) failures += "$name: still running after 60 s"
+    }
 }
 
 private fun activity(name: String, body: () -> Unit) = Activity(name, body)
