@@ -41,6 +41,7 @@ class LauncherTest : FunSpec({
 
             ktcs.terminate() shouldBe 0
             ktcs.output().lines().filter { "kTCS ready" in it } shouldHaveSize 1
+            ktcs.output().lines().filter { " ERROR " in it } shouldHaveSize 0
         }
     }
 

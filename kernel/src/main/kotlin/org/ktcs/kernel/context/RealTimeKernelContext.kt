@@ -6,6 +6,7 @@ import org.slf4j.LoggerFactory
 import java.time.Clock
 import java.time.Instant
 import java.util.concurrent.Executors
+import java.util.concurrent.RejectedExecutionException
 import java.util.concurrent.ScheduledExecutorService
 import java.util.concurrent.TimeUnit
 
@@ -29,7 +30,14 @@ class RealTimeKernelContext(private val wallClock: Clock = Clock.systemUTC()) : 
     override fun elapsedMillis(): Long = (System.nanoTime() - startNanos) / 1_000_000
 
     override fun schedule(delayMillis: Long, action: () -> Unit): Cancellable {
-        val future = executor.schedule({ runGuarded(action) }, delayMillis.coerceAtLeast(0), TimeUnit.MILLISECONDS)
+        val future = try {
+            executor.schedule({ runGuarded(action) }, delayMillis.coerceAtLeast(0), TimeUnit.MILLISECONDS)
+        } catch (closing: RejectedExecutionException) {
+            // The last tasks of a stopping kernel (a driver reporting while it is disabled) may still schedule more;
+            // nothing will run them, and that is fine.
+            log.debug("task scheduled while the kernel context closes; dropped")
+            return Cancellable {}
+        }
         return Cancellable { future.cancel(false) }
     }
 
