@@ -38,6 +38,8 @@ class FakeKernelServices(private val plant: FakePlant = FakePlant()) : KernelSer
     override val router: RouterService = unsupported()
 
     override fun events(): Flow<KernelEvent> = events
+
+    override suspend fun <T> eventsAfter(snapshot: suspend () -> T): Pair<T, Flow<KernelEvent>> = snapshot() to events
 }
 
 /** The names the fake kernel knows. */

@@ -31,6 +31,13 @@ public interface KernelServices {
      * saying it missed events; it should collect again and start from a fresh snapshot.
      */
     public fun events(): Flow<KernelEvent>
+
+    /**
+     * Takes [snapshot] and subscribes to the events after it in one step, in the kernel context: the flow starts
+     * with the first change after the snapshot, so a client that applies the snapshot and then the events neither
+     * misses a change nor sees one twice. [snapshot] may call the other services; it must not block.
+     */
+    public suspend fun <T> eventsAfter(snapshot: suspend () -> T): Pair<T, Flow<KernelEvent>>
 }
 
 /** Route queries, e.g. "how would this vehicle get there?". */

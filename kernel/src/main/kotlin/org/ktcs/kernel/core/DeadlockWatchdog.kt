@@ -33,8 +33,12 @@ class DeadlockWatchdog(private val kernel: KernelCore) {
         val interval = kernel.options.deadlockCheckIntervalMillis
         if (interval <= 0) return
         next = kernel.context.schedule(interval) {
-            check()
-            start()
+            // A failing check is a bug to log, but must not end all later checks.
+            try {
+                check()
+            } finally {
+                start()
+            }
         }
     }
 

@@ -6,6 +6,7 @@ import org.ktcs.api.model.Point
 import org.ktcs.api.model.PointType
 import org.ktcs.api.model.ProcState
 import org.ktcs.api.model.Vehicle
+import org.ktcs.api.model.VehicleState
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.Operations
 import org.ktcs.api.order.TransportOrderCreation
@@ -44,7 +45,10 @@ class IdleBlockers(private val kernel: KernelCore) {
     private fun isIdle(name: String): Boolean {
         val vehicle = kernel.plant.vehicleOrNull(name) ?: return false
         return vehicle.transportOrder == null &&
+            vehicle.orderSequence == null &&
             vehicle.procState == ProcState.IDLE &&
+            vehicle.state in MOVABLE_STATES &&
+            vehicle.allowedOrderTypes.any { it == Vehicle.ANY_ORDER_TYPE || it == PARK_ORDER_TYPE } &&
             vehicle.integrationLevel == IntegrationLevel.TO_BE_UTILIZED &&
             !vehicle.paused &&
             vehicle.currentPosition != null
@@ -100,6 +104,10 @@ class IdleBlockers(private val kernel: KernelCore) {
                     { (_, cost) -> cost },
                 ),
             )?.first
+    }
+
+    private companion object {
+        val MOVABLE_STATES = setOf(VehicleState.IDLE, VehicleState.CHARGING)
     }
 
     private fun kindRank(point: Point, linked: Set<String>): Int = when {

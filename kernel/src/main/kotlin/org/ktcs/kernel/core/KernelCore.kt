@@ -13,6 +13,7 @@ import org.ktcs.api.event.TransportOrderEvent
 import org.ktcs.api.kernel.Cancellable
 import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.model.PlantModel
+import org.ktcs.api.model.VehicleState
 import org.ktcs.api.order.DriveOrder
 import org.ktcs.api.order.HistoryEntry
 import org.ktcs.api.order.OrderSequence
@@ -239,12 +240,15 @@ class KernelCore(
     private fun refuseWhileBusy() {
         val busyOrders = orders.all().filterNot { it.state.isFinal }.map { it.name }
         val openSequences = sequences.all().filterNot { it.finished }.map { it.name }
-        if (busyOrders.isEmpty() && openSequences.isEmpty()) return
+        // An order withdrawn immediately is final at once, while its vehicle may still be finishing a movement.
+        val moving = plant.vehicles().filter { it.state == VehicleState.EXECUTING }.map { it.name }
+        if (busyOrders.isEmpty() && openSequences.isEmpty() && moving.isEmpty()) return
         val reasons = listOfNotNull(
             busyOrders.takeIf { it.isNotEmpty() }?.let { "${it.size} transport order(s) not final (${it.sample()})" },
             openSequences.takeIf {
                 it.isNotEmpty()
             }?.let { "${it.size} order sequence(s) not finished (${it.sample()})" },
+            moving.takeIf { it.isNotEmpty() }?.let { "${it.size} vehicle(s) still moving (${it.sample()})" },
         )
         throw IllegalStateChangeException(
             "the plant model cannot be replaced while orders are being processed: ${reasons.joinToString("; ")}; " +

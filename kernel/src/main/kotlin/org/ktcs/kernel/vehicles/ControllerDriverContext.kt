@@ -84,8 +84,17 @@ class ControllerDriverContext(
         env.notifications.publish(vehicleName, level, text)
     }
 
+    @Volatile
+    private var retired = false
+
+    /** Ignores everything the driver reports from now on, e.g. once the plant model was replaced. */
+    fun retire() {
+        retired = true
+    }
+
+    // Checked when the task runs: a report queued before retirement must not reach the next plant either.
     private fun later(action: () -> Unit) {
-        env.context.execute(action)
+        env.context.execute { if (!retired) action() }
     }
 
     private fun Map<String, String>.with(key: String, value: String?): Map<String, String> = if (value ==

@@ -4,7 +4,9 @@ import org.ktcs.api.driver.DriverMessage
 import org.ktcs.api.driver.VehicleDriverFactory
 import org.ktcs.api.error.IllegalStateChangeException
 import org.ktcs.api.error.InvalidRequestException
+import org.ktcs.api.error.KernelException
 import org.ktcs.api.error.ObjectUnknownException
+import org.ktcs.api.event.NotificationLevel
 import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.service.DriverAttachment
 import org.slf4j.LoggerFactory
@@ -32,8 +34,18 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
             contexts[vehicle.name] = ControllerDriverContext(controller, env)
             env.plant.updateVehicle(vehicle.name) { it.copy(integrationLevel = integrationLevel) }
             preferredFactory(vehicle.name)?.let { factory ->
-                attach(vehicle.name, factory.name)
-                if (enableDrivers) setDriverEnabled(vehicle.name, true)
+                try {
+                    attach(vehicle.name, factory.name)
+                    if (enableDrivers) setDriverEnabled(vehicle.name, true)
+                } catch (error: KernelException) {
+                    // One vehicle with a bad driver setting must not keep the others (or the kernel) from starting.
+                    log.warn("vehicle {} starts without a driver: {}", vehicle.name, error.message)
+                    env.notifications.publish(
+                        vehicle.name,
+                        NotificationLevel.IMPORTANT,
+                        "vehicle ${vehicle.name} has no driver: ${error.message}",
+                    )
+                }
             }
         }
         log.info(
@@ -52,6 +64,7 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
     /** Disables every driver and forgets every controller, before the plant model is replaced. */
     fun discard() {
         stop()
+        contexts.values.forEach(ControllerDriverContext::retire)
         controllers.clear()
         contexts.clear()
     }
@@ -81,7 +94,12 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
                 "vehicle '$vehicle' is processing order '${controller.transportOrder}'",
             )
         }
-        controller.attach(factory.name, factory.create(vehicle, contexts.getValue(vehicle)))
+        val driver = try {
+            factory.create(vehicle, contexts.getValue(vehicle))
+        } catch (error: IllegalArgumentException) {
+            throw InvalidRequestException("driver '${factory.name}' cannot drive vehicle '$vehicle': ${error.message}")
+        }
+        controller.attach(factory.name, driver)
     }
 
     fun setDriverEnabled(vehicle: String, enabled: Boolean) {
@@ -99,7 +117,11 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
     fun sendMessage(vehicle: String, message: DriverMessage) {
         val driver =
             controller(vehicle).driver ?: throw IllegalStateChangeException("vehicle '$vehicle' has no driver attached")
-        driver.processMessage(message)
+        try {
+            driver.processMessage(message)
+        } catch (error: IllegalArgumentException) {
+            throw InvalidRequestException("the driver of vehicle '$vehicle' refused the message: ${error.message}")
+        }
     }
 
     fun setIntegrationLevel(vehicle: String, level: IntegrationLevel) {

@@ -11,7 +11,7 @@ import org.ktcs.api.model.VehicleState
  * A test vehicle: drives a path in its length in milliseconds (1 m/s), operates for one second, and starts at the
  * point its `loopback:initialPosition` property names.
  */
-class StepDriver(name: String, context: DriverContext) : BasicVehicleDriver(name, context) {
+open class StepDriver(name: String, context: DriverContext) : BasicVehicleDriver(name, context) {
     private var busyUntil = 0L
 
     override fun onEnabled() {

@@ -64,18 +64,22 @@ class WsSession(
 
     private suspend fun streamForever(): Nothing = coroutineScope {
         while (true) {
+            // The snapshots and the subscription are taken in one kernel step, so no change falls between them
+            // and none is sent twice.
+            val (snapshots, changes) = services.eventsAfter {
+                topics.map { WsSnapshot(it.wireName, WsTopics.snapshot(it, services)) }
+            }
             val events = Channel<KernelEvent>(capacity)
-            // Subscribe before taking the snapshots, so no change falls between the two.
             val collector = launch(start = CoroutineStart.UNDISPATCHED) {
                 try {
-                    services.events().collect {
+                    changes.collect {
                         if (!events.trySend(it).isSuccess) events.close(SubscriberTooSlowException())
                     }
                 } catch (error: SubscriberTooSlowException) {
                     events.close(error)
                 }
             }
-            topics.forEach { send(WsSnapshot(it.wireName, WsTopics.snapshot(it, services))) }
+            snapshots.forEach { send(it) }
             try {
                 for (event in events) {
                     if (event is PlantModelReplacedEvent) {
