@@ -21,16 +21,22 @@ class NearestVehicleDispatcher(private val context: DispatchContext, private val
 
     // snippet:nearest-dispatch
     override fun dispatch() {
+        // A vehicle given an order in this run still looks free until the kernel has processed the assignment.
+        val taken = HashSet<String>()
         context.dispatchableOrders()
             .filter { it.intendedVehicle == null && it.wrappingSequence == null }
-            .forEach(::assignNearest)
+            .forEach { order -> assignNearest(order, taken) }
         others.dispatch()
     }
 
-    private fun assignNearest(order: TransportOrder) {
-        val nearest = context.vehicles().filter(::isFree).mapNotNull { offer(it, order) }.minByOrNull { it.costs }
+    private fun assignNearest(order: TransportOrder, taken: MutableSet<String>) {
+        val nearest = context.vehicles()
+            .filter { it.name !in taken && isFree(it) }
+            .mapNotNull { offer(it, order) }
+            .minByOrNull { it.costs }
             ?: return
         context.assign(order.name, nearest.vehicle, nearest.driveOrders)
+        taken += nearest.vehicle
     }
     // end-snippet
 

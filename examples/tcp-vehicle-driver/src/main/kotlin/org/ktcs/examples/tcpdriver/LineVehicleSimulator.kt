@@ -68,17 +68,22 @@ class LineVehicleSimulator(
         }
     }
 
+    // A malformed line is ignored: it must not end the connection or the simulator.
     private fun handle(line: String) {
-        val message = LineProtocol.parse(line)
+        val message = runCatching { LineProtocol.parse(line) }.getOrNull() ?: return
         when (message.name) {
-            "COMMAND" -> commands.put(message.fields)
+            "COMMAND" -> if (message.fields.size >= COMMAND_FIELDS && message.fields[0].toLongOrNull() != null) {
+                commands.put(message.fields)
+            }
 
             "CLEAR" -> commands.clear()
 
-            "MESSAGE" -> send(
-                LineProtocol.property("tcp:lastMessage", message.fields[0]),
-                LineProtocol.event("messageReceived", mapOf("type" to message.fields[0])),
-            )
+            "MESSAGE" -> message.fields.firstOrNull()?.let { type ->
+                send(
+                    LineProtocol.property("tcp:lastMessage", type),
+                    LineProtocol.event("messageReceived", mapOf("type" to type)),
+                )
+            }
         }
     }
 
@@ -124,3 +129,5 @@ fun main(args: Array<String>) {
     println("line vehicle simulator at ${args[0]} listening on port ${simulator.port}")
     Thread.currentThread().join()
 }
+
+private const val COMMAND_FIELDS = 3

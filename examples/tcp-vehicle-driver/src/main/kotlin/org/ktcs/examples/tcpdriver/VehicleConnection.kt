@@ -32,6 +32,9 @@ class VehicleConnection(
 
     @Volatile private var running = false
 
+    // Each open() starts a session; a thread of an earlier one (closed, then opened again) ends instead of serving.
+    @Volatile private var session = 0L
+
     @Volatile private var socket: Socket? = null
     private var connector: Thread? = null
 
@@ -41,40 +44,47 @@ class VehicleConnection(
     fun open() {
         if (running) return
         running = true
-        connector = thread(name = "tcp-vehicle-$name", isDaemon = true) { connectWhileRunning() }
+        val mine = ++session
+        connector = thread(name = "tcp-vehicle-$name", isDaemon = true) { connectWhileCurrent(mine) }
     }
 
-    /** Queues [line] for the vehicle; lines queued while disconnected are dropped when the connection drops. */
+    /** Queues [line] for the vehicle; lines still queued when a connection is made are dropped as stale. */
     fun send(line: String) {
         outgoing.put(line)
     }
 
     fun close() {
         running = false
+        session++
         socket?.close()
         connector?.interrupt()
         connector = null
     }
 
-    private fun connectWhileRunning() {
-        while (running) {
+    private fun isCurrent(mine: Long) = running && session == mine
+
+    private fun connectWhileCurrent(mine: Long) {
+        while (isCurrent(mine)) {
             try {
                 Socket().use { connection ->
-                    connection.connect(address, CONNECT_TIMEOUT_MILLIS)
+                    // Known before connecting, so that close() can abort a connection attempt.
                     socket = connection
-                    serve(connection)
+                    connection.connect(address, CONNECT_TIMEOUT_MILLIS)
+                    if (isCurrent(mine)) {
+                        outgoing.clear()
+                        serve(connection, mine)
+                    }
                 }
             } catch (error: IOException) {
-                if (running) log.debug("vehicle {} at {}: {}", name, address, error.message)
+                if (isCurrent(mine)) log.debug("vehicle {} at {}: {}", name, address, error.message)
             } finally {
-                socket = null
-                outgoing.clear()
+                if (session == mine) socket = null
             }
-            if (running) sleepBeforeReconnecting()
+            if (isCurrent(mine)) sleepBeforeReconnecting()
         }
     }
 
-    private fun serve(connection: Socket) {
+    private fun serve(connection: Socket, mine: Long) {
         listener.connected()
         val writer = thread(name = "tcp-vehicle-$name-writer", isDaemon = true) { write(connection) }
         var reason = "the vehicle closed the connection"
@@ -85,7 +95,7 @@ class VehicleConnection(
         } finally {
             writer.interrupt()
         }
-        if (running) listener.disconnected(reason)
+        if (isCurrent(mine)) listener.disconnected(reason)
     }
 
     private fun write(connection: Socket) {
