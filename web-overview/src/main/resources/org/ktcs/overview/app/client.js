@@ -21,6 +21,7 @@ export class KtcsClient {
     this.listeners = new Map(TOPICS.map((topic) => [topic, new Set()]));
     this.state = new Map();
     this.connectionListeners = new Set();
+    this.modelReplacedListeners = new Set();
     this.connected = false;
     this.attempt = 0;
     this.socket = null;
@@ -71,6 +72,12 @@ export class KtcsClient {
     listener(this.connected);
   }
 
+  /** Calls listener with the new model's name when the plant model is replaced; fresh snapshots follow. */
+  onModelReplaced(listener) {
+    this.modelReplacedListeners.add(listener);
+    return () => this.modelReplacedListeners.delete(listener);
+  }
+
   connect() {
     const scheme = location.protocol === 'https:' ? 'wss' : 'ws';
     const query = this.accessKey ? `?accessKey=${encodeURIComponent(this.accessKey)}` : '';
@@ -101,12 +108,16 @@ export class KtcsClient {
     if (message.type === 'snapshot') this.applySnapshot(message);
     else if (message.type === 'event') this.applyEvent(message);
     else if (message.type === 'error') console.warn(`kTCS WebSocket: ${message.message}`);
+    else if (message.type === 'modelReplaced') this.notifyAll(this.modelReplacedListeners, message.name);
     // "missed" needs nothing here: fresh snapshots of every topic follow it.
     const listeners = this.listeners.get(message.topic);
-    if (!listeners) return;
+    if (listeners) this.notifyAll(listeners, message);
+  }
+
+  notifyAll(listeners, argument) {
     for (const listener of listeners) {
       try {
-        listener(message);
+        listener(argument);
       } catch (error) {
         reportListenerError(error);
       }
