@@ -25,6 +25,7 @@ export class KtcsClient {
     this.connected = false;
     this.attempt = 0;
     this.socket = null;
+    this.reconnectNotBefore = 0;
   }
 
   /** Calls REST v1; resolves with the parsed JSON (or null), rejects with an ApiError naming the problem. */
@@ -92,10 +93,17 @@ export class KtcsClient {
     socket.onclose = () => {
       if (this.socket !== socket) return;
       this.setConnected(false);
-      const delay = RECONNECT_DELAYS_MS[Math.min(this.attempt, RECONNECT_DELAYS_MS.length - 1)];
+      const backOff = RECONNECT_DELAYS_MS[Math.min(this.attempt, RECONNECT_DELAYS_MS.length - 1)];
+      const delay = Math.max(backOff, this.reconnectNotBefore - Date.now());
       this.attempt += 1;
       setTimeout(() => this.connect(), delay);
     };
+  }
+
+  /** Closes the socket as a network failure would; reconnects by itself, not before offlineMs have passed. */
+  dropConnection(offlineMs = 0) {
+    this.reconnectNotBefore = Date.now() + offlineMs;
+    this.socket?.close();
   }
 
   setConnected(connected) {

@@ -117,6 +117,7 @@ async function start() {
         plant.userMoved = false;
         plant.fit();
       }
+      refreshDetails();
       document.getElementById('model-name').textContent = model.name;
       document.getElementById('plant-summary').textContent = summaryOf(model);
       installLayerToggles(document.getElementById('layers'), model, plant);
@@ -155,8 +156,8 @@ function exposeForDiagnostics(plant, client, themes) {
       const vehicle = client.state.get('vehicles')?.get(name);
       return vehicle ? themes.vehicleStyle(vehicle) : null;
     },
-    /** Closes the WebSocket as a network failure would; the client reconnects by itself. */
-    dropConnection: () => client.socket?.close(),
+    /** Closes the WebSocket as a network failure would; the client reconnects by itself after offlineMs at least. */
+    dropConnection: (offlineMs = 0) => client.dropConnection(offlineMs),
     /** Draws frames of the static plant at changing zoom levels and answers the draw times in ms. */
     benchmark(frames = 30, warmUp = 5) {
       const times = [];
