@@ -17,18 +17,26 @@ class ClassPathFilesTest : FunSpec({
         )!!.readText()
     }
 
-    context("refuses paths that leave the directory, directories and unknown file types") {
+    // Each of these names a JavaScript file that exists, so only the path check itself can refuse it.
+    context("refuses paths that leave the directory or are not plain relative paths") {
         withData(
             nameFn = { "'$it'" },
             "../load-generator/panel.js",
+            "../../app/main.js",
+            "../statistics/chart.js",
             "./chart.js",
             "/chart.js",
             "a//chart.js",
             "..\\chart.js",
-            "",
-            "missing.js",
-            "../../../../META-INF/services/org.ktcs.kernel.extension.KtcsExtension",
-            "../../OverviewRoutes.class",
         ) { path -> files.read(path).shouldBeNull() }
+    }
+
+    context("refuses directories, missing files and unknown file types") {
+        withData(nameFn = { "'$it'" }, "", "missing.js", "panel.js.bak") { path -> files.read(path).shouldBeNull() }
+    }
+
+    test("refuses a file of an unknown type even where it exists") {
+        ClassPathFiles(ClassPathFilesTest::class.java.classLoader, "org/ktcs/overview")
+            .read("OverviewRoutes.class").shouldBeNull()
     }
 })

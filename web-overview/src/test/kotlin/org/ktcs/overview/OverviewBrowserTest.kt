@@ -1,8 +1,10 @@
 package org.ktcs.overview
 
+import com.microsoft.playwright.Locator
 import com.microsoft.playwright.Page
 import com.microsoft.playwright.assertions.LocatorAssertions
 import com.microsoft.playwright.assertions.PlaywrightAssertions.assertThat
+import io.kotest.assertions.nondeterministic.eventually
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.doubles.shouldBeGreaterThan
@@ -10,13 +12,21 @@ import io.kotest.matchers.shouldBe
 import io.kotest.matchers.shouldNotBe
 import kotlinx.serialization.json.Json
 import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
 import kotlinx.serialization.json.boolean
 import kotlinx.serialization.json.jsonArray
 import kotlinx.serialization.json.jsonObject
 import kotlinx.serialization.json.jsonPrimitive
 import kotlinx.serialization.json.long
+import java.net.URLEncoder
 import java.util.regex.Pattern
 import kotlin.math.hypot
+import kotlin.time.Duration.Companion.seconds
+
+private val FINAL_STATES = setOf("FINISHED", "FAILED", "UNROUTABLE", "WITHDRAWN")
+private val CREATED = Regex("created (\\d+)")
+
+private fun encode(name: String): String = URLEncoder.encode(name, Charsets.UTF_8).replace("+", "%20")
 
 /**
  * The overview in real headless Chromium against the real application (demo plant, loopback vehicles). One
@@ -49,6 +59,19 @@ class OverviewBrowserTest : FunSpec({
         val found = page().evaluate("([k, n]) => window.ktcsOverview.pagePositionOf(k, n)", listOf(kind, name))
             as Map<*, *>? ?: return null
         return (found["x"] as Number).toDouble() to (found["y"] as Number).toDouble()
+    }
+
+    fun longestPath(): String = model()["paths"]!!.jsonArray.map { it.jsonObject }
+        .maxBy { it["length"]!!.jsonPrimitive.long }["name"]!!.jsonPrimitive.content
+
+    suspend fun withdrawOpenOrders() {
+        val open = {
+            Json.parseToJsonElement(ktcs!!.get("/v1/transportOrders").body()).jsonArray.map { it.jsonObject }
+                .filter { it["state"]!!.jsonPrimitive.content !in FINAL_STATES }
+                .map { it["name"]!!.jsonPrimitive.content }
+        }
+        open().forEach { ktcs!!.post("/v1/transportOrders/${encode(it)}/withdrawal?immediate=true", "") }
+        eventually(20.seconds) { open().shouldBeEmpty() }
     }
 
     afterSpec {
@@ -156,8 +179,9 @@ class OverviewBrowserTest : FunSpec({
         val panel = page().locator("[data-panel=statistics]")
         assertThat(panel.locator("[data-role=totals]")).hasText(Pattern.compile("Finished: [1-9]"))
         assertThat(panel.locator("[data-role=per-minute] rect:not([height='0'])").first()).isVisible()
-        assertThat(panel.locator("[data-role=activity] text").first())
-            .isVisible(LocatorAssertions.IsVisibleOptions().setTimeout(10_000.0))
+        // A vehicle's row appears only once its time has been counted (the legend is always drawn).
+        assertThat(panel.locator("[data-role=activity]"))
+            .containsText("Vehicle-01", LocatorAssertions.ContainsTextOptions().setTimeout(10_000.0))
         watched.screenshot("panel-statistics")
     }
 
@@ -170,15 +194,58 @@ class OverviewBrowserTest : FunSpec({
         watched.screenshot("panel-resources")
     }
 
-    browserTest("after the WebSocket drops, the page reconnects and resynchronises by itself") {
-        page().evaluate("() => window.ktcsOverview.dropConnection()")
+    browserTest("after the WebSocket drops, the page resynchronises and the load generator keeps running") {
+        val path = longestPath()
+        page().locator("#fit").click()
+        val (x, y) = position("path", path)!!
+        page().mouse().click(x, y)
+        val lockedFact = page().locator(
+            "#details tr",
+        ).filter(Locator.FilterOptions().setHasText("Locked")).locator("td")
+        assertThat(lockedFact).hasText("no")
+        // The sources and destinations chosen in the load generator test are still selected.
+        page().locator("[data-tab=panel-load-generator]").click()
+        val generator = page().locator("[data-panel=load-generator]")
+        generator.locator("[data-role=rate]").fill("60")
+        generator.locator("[data-role=toggle]").click()
+
+        page().evaluate("() => window.ktcsOverview.dropConnection(2000)")
         page().waitForFunction("() => !window.ktcsOverview.connected()")
+        // Changed while the page hears nothing: only the snapshots after reconnecting can tell it.
+        ktcs!!.put("/v1/paths/${encode(path)}/locked?newValue=true").statusCode() shouldBe 200
         page().waitForFunction(
             "() => window.ktcsOverview.connected()",
             null,
             Page.WaitForFunctionOptions().setTimeout(10_000.0),
         )
         assertThat(page().locator("#connection")).hasText("live")
+        assertThat(lockedFact).hasText("yes")
         (drawn()["vehicles"] as Number).toInt() shouldNotBe 0
+
+        val createdSoFar = CREATED.find(generator.locator("[data-role=status]").textContent())!!.groupValues[1].toInt()
+        page().waitForFunction(
+            "n => { const m = document.querySelector('[data-panel=load-generator] [data-role=status]').textContent" +
+                ".match(/Running · created (\\d+)/); return m !== null && Number(m[1]) > n; }",
+            createdSoFar,
+            Page.WaitForFunctionOptions().setTimeout(10_000.0),
+        )
+        assertThat(generator.locator("[data-role=error]")).isEmpty()
+        generator.locator("[data-role=toggle]").click()
+        assertThat(generator.locator("[data-role=status]")).containsText("Stopped")
+        ktcs!!.put("/v1/paths/${encode(path)}/locked?newValue=false").statusCode() shouldBe 200
+        assertThat(lockedFact).hasText("no")
+    }
+
+    browserTest("a replaced plant model is announced, closes the details and is drawn") {
+        // The kernel replaces the model only when no order runs: withdraw what the load generator left.
+        withdrawOpenOrders()
+        assertThat(page().locator("#details")).isVisible()
+        val replacement = JsonObject(model() + ("name" to JsonPrimitive("Replaced demo")))
+        ktcs!!.put("/v1/plantModel", replacement.toString()).statusCode() shouldBe 200
+        assertThat(page().locator("#toasts")).containsText("Plant model replaced: Replaced demo")
+        assertThat(page().locator("#model-name")).hasText("Replaced demo")
+        assertThat(page().locator("#details")).isHidden()
+        page().waitForFunction("n => window.ktcsOverview.drawn().points === n", model()["points"]!!.jsonArray.size)
+        watched.screenshot("model-replaced")
     }
 })

@@ -30,6 +30,11 @@ class RunningKtcs(
             .POST(HttpRequest.BodyPublishers.ofString(json)),
     )
 
+    fun put(path: String, json: String = ""): HttpResponse<String> = send(
+        HttpRequest.newBuilder(uri(path)).header("Content-Type", "application/json")
+            .PUT(HttpRequest.BodyPublishers.ofString(json)),
+    )
+
     private fun uri(path: String) = URI.create(baseUrl + path)
 
     private fun send(request: HttpRequest.Builder): HttpResponse<String> =

@@ -21,9 +21,11 @@ export class KtcsClient {
     this.listeners = new Map(TOPICS.map((topic) => [topic, new Set()]));
     this.state = new Map();
     this.connectionListeners = new Set();
+    this.modelReplacedListeners = new Set();
     this.connected = false;
     this.attempt = 0;
     this.socket = null;
+    this.reconnectNotBefore = 0;
   }
 
   /** Calls REST v1; resolves with the parsed JSON (or null), rejects with an ApiError naming the problem. */
@@ -71,6 +73,12 @@ export class KtcsClient {
     listener(this.connected);
   }
 
+  /** Calls listener with the new model's name when the plant model is replaced; fresh snapshots follow. */
+  onModelReplaced(listener) {
+    this.modelReplacedListeners.add(listener);
+    return () => this.modelReplacedListeners.delete(listener);
+  }
+
   connect() {
     const scheme = location.protocol === 'https:' ? 'wss' : 'ws';
     const query = this.accessKey ? `?accessKey=${encodeURIComponent(this.accessKey)}` : '';
@@ -85,10 +93,17 @@ export class KtcsClient {
     socket.onclose = () => {
       if (this.socket !== socket) return;
       this.setConnected(false);
-      const delay = RECONNECT_DELAYS_MS[Math.min(this.attempt, RECONNECT_DELAYS_MS.length - 1)];
+      const backOff = RECONNECT_DELAYS_MS[Math.min(this.attempt, RECONNECT_DELAYS_MS.length - 1)];
+      const delay = Math.max(backOff, this.reconnectNotBefore - Date.now());
       this.attempt += 1;
       setTimeout(() => this.connect(), delay);
     };
+  }
+
+  /** Closes the socket as a network failure would; reconnects by itself, not before offlineMs have passed. */
+  dropConnection(offlineMs = 0) {
+    this.reconnectNotBefore = Date.now() + offlineMs;
+    this.socket?.close();
   }
 
   setConnected(connected) {
@@ -101,12 +116,16 @@ export class KtcsClient {
     if (message.type === 'snapshot') this.applySnapshot(message);
     else if (message.type === 'event') this.applyEvent(message);
     else if (message.type === 'error') console.warn(`kTCS WebSocket: ${message.message}`);
+    else if (message.type === 'modelReplaced') this.notifyAll(this.modelReplacedListeners, message.name);
     // "missed" needs nothing here: fresh snapshots of every topic follow it.
     const listeners = this.listeners.get(message.topic);
-    if (!listeners) return;
+    if (listeners) this.notifyAll(listeners, message);
+  }
+
+  notifyAll(listeners, argument) {
     for (const listener of listeners) {
       try {
-        listener(message);
+        listener(argument);
       } catch (error) {
         reportListenerError(error);
       }

@@ -101,7 +101,7 @@ export class Details {
         el('button', { type: 'button', 'data-action': 'unlock', onclick: () => setLocked(false) }, 'Unlock'),
       ];
     }
-    if (kind === 'vehicle') return vehicleActions(this.ktcs, name);
+    if (kind === 'vehicle') return vehicleActions(this.ktcs, name, this.objectOf({ kind, name })?.integrationLevel);
     if (kind === 'order') {
       const withdraw = (immediate) => act(this.ktcs, `Withdraw ${name}${immediate ? ' immediately' : ''}`,
         () => this.ktcs.api('POST', `/transportOrders/${enc(name)}/withdrawal?immediate=${immediate}`));

@@ -22,6 +22,19 @@ function append(element, children) {
   }
 }
 
+/**
+ * Calls onRow with the value of attribute on the row the operator presses in tbody. One listener on the body, on
+ * pointerdown: rows are rebuilt several times a second, so a row's own click handler would often be lost between
+ * the press and the release.
+ */
+export function onRowPress(tbody, attribute, onRow) {
+  tbody.addEventListener('pointerdown', (event) => {
+    if (event.button !== 0) return;
+    const row = event.target.closest(`tr[${attribute}]`);
+    if (row && tbody.contains(row)) onRow(row.getAttribute(attribute));
+  });
+}
+
 /** Replaces the element's content. */
 export function fill(element, ...children) {
   element.replaceChildren();

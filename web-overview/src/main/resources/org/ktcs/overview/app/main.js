@@ -15,11 +15,14 @@ import { installLayerToggles, summaryOf } from './layers.js';
 import { throttle } from './throttle.js';
 
 const toasts = document.getElementById('toasts');
+const MAX_TOASTS = 5;
 
 /** Shows a message to the operator; errors stay longer. */
 function notify(text, level = 'info') {
   const toast = el('div', { className: `toast ${level}`, role: level === 'error' ? 'alert' : 'status' }, String(text));
   toasts.append(toast);
+  // A burst of messages must not cover the page: the oldest go first.
+  while (toasts.childElementCount > MAX_TOASTS) toasts.firstElementChild.remove();
   setTimeout(() => toast.remove(), level === 'error' ? 15000 : 6000);
 }
 
@@ -98,10 +101,23 @@ async function start() {
   installPlantControls(plant);
   installConnectionIndicator(client);
 
+  let refitAfterReplacement = false;
+  client.onModelReplaced((name) => {
+    notify(`Plant model replaced: ${name}`, 'info');
+    details.show(null);
+    dialog.close();
+    refitAfterReplacement = true;
+  });
   client.subscribe('plantModel', (message) => {
     if (message.type === 'snapshot') {
       const model = message.objects[0];
       plant.setModel(model);
+      if (refitAfterReplacement) {
+        refitAfterReplacement = false;
+        plant.userMoved = false;
+        plant.fit();
+      }
+      refreshDetails();
       document.getElementById('model-name').textContent = model.name;
       document.getElementById('plant-summary').textContent = summaryOf(model);
       installLayerToggles(document.getElementById('layers'), model, plant);
@@ -140,8 +156,8 @@ function exposeForDiagnostics(plant, client, themes) {
       const vehicle = client.state.get('vehicles')?.get(name);
       return vehicle ? themes.vehicleStyle(vehicle) : null;
     },
-    /** Closes the WebSocket as a network failure would; the client reconnects by itself. */
-    dropConnection: () => client.socket?.close(),
+    /** Closes the WebSocket as a network failure would; the client reconnects by itself after offlineMs at least. */
+    dropConnection: (offlineMs = 0) => client.dropConnection(offlineMs),
     /** Draws frames of the static plant at changing zoom levels and answers the draw times in ms. */
     benchmark(frames = 30, warmUp = 5) {
       const times = [];

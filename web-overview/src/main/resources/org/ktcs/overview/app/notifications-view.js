@@ -11,13 +11,13 @@ export class NotificationsView {
     this.list = el('ol', { className: 'notifications', 'data-view': 'notifications' });
     fill(container, this.list);
     let unseen = 0;
+    tabs.onActivate('notifications', () => { unseen = 0; });
     const render = throttle(() => this.render(), 250);
     client.subscribe('notifications', (message) => {
       if (message.type === 'event' && tabs.active !== 'notifications') {
         unseen += 1;
         tabs.setBadge('notifications', String(unseen));
       }
-      if (tabs.active === 'notifications') unseen = 0;
       render();
     });
   }

@@ -13,6 +13,11 @@ export class OrderDialog {
     this.client = client;
   }
 
+  /** Closes the dialog if it is open (its choices come from a model that may be gone). */
+  close() {
+    if (this.dialog.open) this.dialog.close();
+  }
+
   open() {
     const model = this.ktcs.model();
     if (!model) {
@@ -37,7 +42,7 @@ export class OrderDialog {
       this.error,
       el('menu', {},
         el('button', { type: 'button', onclick: () => this.dialog.close() }, 'Cancel'),
-        el('button', { type: 'submit', className: 'primary', 'data-action': 'create-order' }, 'Create'))));
+        this.submitButton = el('button', { type: 'submit', className: 'primary', 'data-action': 'create-order' }, 'Create'))));
     this.dialog.showModal();
   }
 
@@ -77,6 +82,8 @@ export class OrderDialog {
       intendedVehicle: this.vehicle.value || null,
       deadline: this.deadline.value ? new Date(this.deadline.value).toISOString() : null,
     };
+    if (this.submitButton.disabled) return;
+    this.submitButton.disabled = true;
     try {
       const created = await this.ktcs.api('POST', `/transportOrders/${enc(name || 'Order-')}`, body);
       this.ktcs.notify(`Created transport order ${created?.name ?? name}`, 'info');
@@ -84,6 +91,8 @@ export class OrderDialog {
     } catch (error) {
       this.error.textContent = error.message;
       this.ktcs.notify(`Creating the order failed: ${error.message}`, 'error');
+    } finally {
+      this.submitButton.disabled = false;
     }
   }
 }

@@ -1,6 +1,6 @@
 // The live transport order table with filters; a click opens the order's details, "New order" the dialog.
 
-import { el, fill, formatDuration } from './dom.js';
+import { el, fill, formatDuration, onRowPress } from './dom.js';
 import { throttle } from './throttle.js';
 
 const FINAL = new Set(['FINISHED', 'FAILED', 'UNROUTABLE', 'WITHDRAWN']);
@@ -26,6 +26,7 @@ export class OrdersView {
     });
     this.count = el('span', { className: 'count' });
     this.body = el('tbody');
+    onRowPress(this.body, 'data-order', (name) => this.details.show({ kind: 'order', name }));
     fill(container,
       el('div', { className: 'view-toolbar' },
         el('button', { type: 'button', className: 'primary', 'data-action': 'new-order', onclick: () => dialog.open() }, 'New order'),
@@ -47,9 +48,7 @@ export class OrdersView {
       .sort((a, b) => Date.parse(b.creationTime) - Date.parse(a.creationTime) || b.name.localeCompare(a.name));
     this.count.textContent = `${orders.length} order${orders.length === 1 ? '' : 's'}`;
     const now = Date.now();
-    fill(this.body, orders.slice(0, SHOWN).map((order) => el('tr', {
-      'data-order': order.name, onclick: () => this.details.show({ kind: 'order', name: order.name }),
-    },
+    fill(this.body, orders.slice(0, SHOWN).map((order) => el('tr', { 'data-order': order.name },
     el('td', {}, order.name),
     el('td', { 'data-column': 'state' }, el('span', { className: `state ${order.state}` }, order.state)),
     el('td', {}, order.processingVehicle ?? (order.intendedVehicle ? `(${order.intendedVehicle})` : '—')),

@@ -14,7 +14,7 @@ export async function mountPanels(extensions, tabs, ktcs, notify) {
       if (!module || typeof module.mount !== 'function') {
         throw new Error(`its module ${panel.module} has no default export with mount(container, ktcs)`);
       }
-      module.mount(container, ktcs);
+      await module.mount(container, ktcs);
     } catch (error) {
       fill(container, el('p', { className: 'form-error' }, `The panel '${panel.title}' could not be loaded: ${error.message}`));
       notify(`Panel '${panel.title}' could not be loaded: ${error.message}`, 'error');

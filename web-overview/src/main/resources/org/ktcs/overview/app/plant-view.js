@@ -432,6 +432,10 @@ export class PlantView {
       if (drag && drag.moved <= 4) this.onSelect(this.hit(event.offsetX, event.offsetY));
       drag = null;
     });
+    // A cancelled gesture (touch taken over by the browser, window lost focus) ends the drag without a selection.
+    const endDrag = () => { drag = null; };
+    target.addEventListener('pointercancel', endDrag);
+    target.addEventListener('lostpointercapture', endDrag);
     target.addEventListener('wheel', (event) => {
       event.preventDefault();
       this.userMoved = true;

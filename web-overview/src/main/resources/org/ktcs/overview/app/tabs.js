@@ -7,6 +7,12 @@ export class Tabs {
     this.bar = bar;
     this.bodies = bodies;
     this.tabs = new Map();
+    this.activationListeners = new Map();
+  }
+
+  /** Calls listener each time the tab id is activated. */
+  onActivate(id, listener) {
+    this.activationListeners.set(id, [...(this.activationListeners.get(id) ?? []), listener]);
   }
 
   /** Adds a tab and answers its (hidden) body element. */
@@ -30,6 +36,7 @@ export class Tabs {
     }
     this.active = id;
     this.setBadge(id, '');
+    (this.activationListeners.get(id) ?? []).forEach((listener) => listener());
   }
 
   setBadge(id, text) {

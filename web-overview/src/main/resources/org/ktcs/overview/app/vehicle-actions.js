@@ -5,11 +5,11 @@ import { act, enc } from './actions.js';
 
 const INTEGRATION_LEVELS = ['TO_BE_IGNORED', 'TO_BE_NOTICED', 'TO_BE_RESPECTED', 'TO_BE_UTILIZED'];
 
-export function vehicleActions(ktcs, name) {
+export function vehicleActions(ktcs, name, currentLevel) {
   const path = `/vehicles/${enc(name)}`;
   const run = (label, method, suffix, body) => act(ktcs, `${label} (${name})`, () => ktcs.api(method, `${path}${suffix}`, body));
   const level = el('select', { 'aria-label': 'Integration level' },
-    INTEGRATION_LEVELS.map((value) => el('option', { value }, value)));
+    INTEGRATION_LEVELS.map((value) => el('option', { value, selected: value === currentLevel }, value)));
   const messageType = el('input', { placeholder: 'message type, e.g. tcs:virtualVehicle:setState', size: 28 });
   const messageParameters = el('input', { placeholder: 'key=value, key=value', size: 28 });
   const sendMessage = () => {

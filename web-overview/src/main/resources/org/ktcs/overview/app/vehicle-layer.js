@@ -14,8 +14,11 @@ export class VehicleLayer {
     this.drawn = new Map();
   }
 
+  /** Takes a (possibly different) model's geometry: every vehicle is placed afresh, not glided from old points. */
   setGeometry(geometry) {
     this.geometry = geometry;
+    this.tracks.clear();
+    this.setVehicles([...this.vehicles.values()]);
   }
 
   setOrders(orders) {

@@ -2,6 +2,8 @@
 // the chosen locations at a fixed rate until stopped, through the web API like any other client.
 
 const MAX_RATE_PER_MINUTE = 600;
+// More requests than this still waiting means the kernel is not keeping up: a tick is skipped rather than piling up.
+const MAX_IN_FLIGHT = 4;
 
 export default {
   mount(container, ktcs) {
@@ -16,10 +18,24 @@ export default {
       if (message.type === 'snapshot') fillLocations(ui, message.objects[0]);
     });
 
+    let inFlight = 0;
+    let lastSucceeded = true;
+
+    const fail = (problem) => {
+      ui.error.textContent = problem;
+      ktcs.notify(`Load generator: ${problem}`, 'error');
+    };
+
     const createOne = async () => {
+      if (inFlight >= MAX_IN_FLIGHT) return;
       const from = pick(selected(ui.from));
-      const to = pick(selected(ui.to).filter((option) => option.value !== from.value));
-      if (!to) return;
+      const to = from && pick(selected(ui.to).filter((option) => option.value !== from.value));
+      if (!from || !to) {
+        stop();
+        fail(from ? 'no destination other than the chosen source is selected' : 'no source is selected');
+        return;
+      }
+      inFlight += 1;
       try {
         await ktcs.api('POST', '/transportOrders/Load-', {
           incompleteName: true,
@@ -29,9 +45,15 @@ export default {
           ],
         });
         created += 1;
+        lastSucceeded = true;
       } catch (error) {
         failed += 1;
-        ui.error.textContent = error.message;
+        // One notification per run of failures, not one per tick.
+        if (lastSucceeded) fail(`creating an order failed: ${error.message}`);
+        else ui.error.textContent = error.message;
+        lastSucceeded = false;
+      } finally {
+        inFlight -= 1;
       }
       report();
     };
@@ -55,6 +77,7 @@ export default {
         return;
       }
       ui.error.textContent = '';
+      lastSucceeded = true;
       timer = setInterval(createOne, 60000 / Number(ui.rate.value));
       ui.toggle.textContent = 'Stop';
       createOne();
@@ -99,8 +122,15 @@ function fillLocations(ui, model) {
       option.textContent = `${location.name} (${operation})`;
       return option;
     });
-  ui.from.replaceChildren(...options(/load/i, /unload/i));
-  ui.to.replaceChildren(...options(/unload|drop/i, null));
+  refill(ui.from, options(/load/i, /unload/i));
+  refill(ui.to, options(/unload|drop/i, null));
+}
+
+// A new snapshot (reconnect, missed events, replaced model) must not lose what the operator chose.
+function refill(select, options) {
+  const kept = new Set(selected(select).map((option) => option.value));
+  options.forEach((option) => { option.selected = kept.has(option.value); });
+  select.replaceChildren(...options);
 }
 
 // The operation a generated order asks for at a location: one that sounds right, else the first the type allows.

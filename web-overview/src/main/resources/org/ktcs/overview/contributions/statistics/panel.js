@@ -21,11 +21,16 @@ export default {
     const activity = new Map();
     const unsubscribeOrders = ktcs.subscribe('transportOrders', (message) => track(orders, message));
     const unsubscribeVehicles = ktcs.subscribe('vehicles', (message) => track(vehicles, message));
+    // Timers in a hidden tab fire late or in bursts: each sample counts the time that really passed since the last.
+    let lastSample = performance.now();
     const sample = setInterval(() => {
+      const now = performance.now();
+      const elapsedSeconds = (now - lastSample) / 1000;
+      lastSample = now;
       for (const vehicle of vehicles.values()) {
         const kind = activityOf(vehicle, orders);
         const totals = activity.get(vehicle.name) ?? { driving: 0, operating: 0, charging: 0, idle: 0 };
-        totals[kind] += 1;
+        totals[kind] += elapsedSeconds;
         activity.set(vehicle.name, totals);
       }
     }, 1000);
