@@ -21,8 +21,8 @@ public interface PlantModelService {
      * order sequences are dropped; the vehicles of [model] start afresh, with drivers attached and enabled as at
      * start-up. Clients learn of it through a [org.ktcs.api.event.PlantModelReplacedEvent].
      *
-     * @throws org.ktcs.api.error.IllegalStateChangeException while a transport order is not final or an order
-     *   sequence is not finished (the message names them).
+     * @throws org.ktcs.api.error.IllegalStateChangeException while a transport order is not final, an order
+     *   sequence is not finished or a vehicle is still moving (the message names them).
      * @throws org.ktcs.api.error.InvalidRequestException if [model] has errors (the message lists them).
      */
     public suspend fun replacePlantModel(model: PlantModel)

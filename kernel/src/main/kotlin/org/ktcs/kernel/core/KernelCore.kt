@@ -217,7 +217,8 @@ class KernelCore(
 
     /**
      * Replaces the plant with [model] when nothing is under way: no transport order that is not final, no order
-     * sequence that is not finished. Drops final orders and finished sequences, then starts the new vehicles.
+     * sequence that is not finished, no vehicle moving. Drops final orders and finished sequences, then starts the
+     * new vehicles.
      */
     fun replacePlantModel(model: PlantModel) {
         refuseWhileBusy()
