@@ -70,6 +70,8 @@ class TcpVehicleDriver(
     private inner class Reports : VehicleConnection.Listener {
         override fun connected() {
             log.info("vehicle {} connected", vehicleName)
+            // After a dropped connection the kernel has failed the commands it had sent; the vehicle must drop them too.
+            connection.send(LineProtocol.clear())
         }
 
         override fun disconnected(reason: String) {

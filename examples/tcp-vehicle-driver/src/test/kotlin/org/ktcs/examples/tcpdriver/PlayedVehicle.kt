@@ -1,5 +1,7 @@
 package org.ktcs.examples.tcpdriver
 
+import java.io.BufferedReader
+import java.io.BufferedWriter
 import java.net.InetAddress
 import java.net.ServerSocket
 import java.net.Socket
@@ -11,27 +13,40 @@ class PlayedVehicle : AutoCloseable {
     private var socket: Socket? = null
     val port: Int get() = server.localPort
 
-    fun awaitDriver() {
+    private var reader: BufferedReader? = null
+    private var writer: BufferedWriter? = null
+
+    /** Waits for the driver to connect and returns the first line it sends. */
+    fun awaitDriver(): String {
         server.soTimeout = TIMEOUT_MILLIS
-        socket = server.accept().also { it.soTimeout = TIMEOUT_MILLIS }
+        val accepted = server.accept().also { it.soTimeout = TIMEOUT_MILLIS }
+        socket = accepted
+        reader = accepted.getInputStream().bufferedReader()
+        writer = accepted.getOutputStream().bufferedWriter()
+        return receive()
+    }
+
+    /** Drops the connection, as a vehicle out of radio range does. */
+    fun dropConnection() {
+        socket?.close()
     }
 
     private val connection get() = checkNotNull(socket) { "the driver has not connected" }
-    private val reader by lazy { connection.getInputStream().bufferedReader() }
-    private val writer by lazy { connection.getOutputStream().bufferedWriter() }
 
     fun send(vararg lines: String) {
-        lines.forEach { writer.write(it + "\n") }
-        writer.flush()
+        val out = checkNotNull(writer) { "the driver has not connected" }
+        lines.forEach { out.write(it + "\n") }
+        out.flush()
     }
 
-    fun receive(): String = reader.readLine() ?: error("the driver closed the connection")
+    fun receive(): String =
+        checkNotNull(reader) { "the driver has not connected" }.readLine() ?: error("the driver closed the connection")
 
     /** The next line if one arrives within [millis], else `null`. */
     fun receiveWithin(millis: Int): String? {
         connection.soTimeout = millis
         return try {
-            reader.readLine()
+            checkNotNull(reader).readLine()
         } catch (_: SocketTimeoutException) {
             null
         } finally {

@@ -52,7 +52,7 @@ class TcpVehicleDriverTest : FunSpec({
     fun tcpVehicle() = kernel.get("/vehicles/Tcp-01")
 
     test("the vehicle's position and energy reports reach the kernel") {
-        vehicle.awaitDriver()
+        vehicle.awaitDriver() shouldBe "CLEAR"
         vehicle.send("POSITION|Point-0027", "ENERGY|80", "STATE|IDLE")
         eventually(10.seconds) {
             tcpVehicle()["currentPosition"]!!.jsonPrimitive.content shouldBe "Point-0027"
@@ -134,6 +134,15 @@ class TcpVehicleDriverTest : FunSpec({
         vehicle.receive() shouldStartWith "COMMAND|"
         kernel.post("/transportOrders/T2/withdrawal?immediate=true", "")
         generateSequence { vehicle.receive() }.first { !it.startsWith("COMMAND|") } shouldBe "CLEAR"
+    }
+
+    test("after a dropped connection the driver connects again and first clears what the vehicle still holds") {
+        vehicle.dropConnection()
+        eventually(10.seconds) { tcpVehicle()["state"]!!.jsonPrimitive.content shouldBe "UNKNOWN" }
+
+        vehicle.awaitDriver() shouldBe "CLEAR"
+        vehicle.send("POSITION|Point-0027", "STATE|IDLE")
+        eventually(10.seconds) { tcpVehicle()["state"]!!.jsonPrimitive.content shouldBe "IDLE" }
     }
 })
 
