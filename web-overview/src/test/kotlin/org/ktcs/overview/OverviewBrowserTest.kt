@@ -7,6 +7,7 @@ import com.microsoft.playwright.assertions.PlaywrightAssertions.assertThat
 import io.kotest.assertions.nondeterministic.eventually
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.collections.shouldNotBeEmpty
 import io.kotest.matchers.doubles.shouldBeGreaterThan
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.shouldNotBe
@@ -63,6 +64,17 @@ class OverviewBrowserTest : FunSpec({
 
     fun longestPath(): String = model()["paths"]!!.jsonArray.map { it.jsonObject }
         .maxBy { it["length"]!!.jsonPrimitive.long }["name"]!!.jsonPrimitive.content
+
+    fun drawnNames(what: String): List<String> =
+        (page().evaluate("() => window.ktcsOverview.$what()") as List<*>).map { it as String }
+
+    /** Every resource a vehicle holds (allocated or claimed), as the kernel tells it. */
+    fun heldByVehicles(): List<String> = Json.parseToJsonElement(ktcs!!.get("/v1/vehicles").body()).jsonArray
+        .flatMap { vehicle ->
+            listOf("allocatedResources", "claimedResources").flatMap { key ->
+                vehicle.jsonObject[key]!!.jsonArray.flatMap { set -> set.jsonArray.map { it.jsonPrimitive.content } }
+            }
+        }.distinct().sorted()
 
     suspend fun withdrawOpenOrders() {
         val open = {
@@ -239,13 +251,25 @@ class OverviewBrowserTest : FunSpec({
     browserTest("a replaced plant model is announced, closes the details and is drawn") {
         // The kernel replaces the model only when no order runs: withdraw what the load generator left.
         withdrawOpenOrders()
-        assertThat(page().locator("#details")).isVisible()
+        // A selected order highlights its route; the replacement drops the (final) order, so nothing may stay drawn.
+        page().locator("[data-tab=orders]").click()
+        page().locator("[data-order='Browser-Order-1']").click()
+        assertThat(page().locator("#details h2")).hasText("Order Browser-Order-1")
+        drawnNames("highlightedRoute").shouldNotBeEmpty()
         val replacement = JsonObject(model() + ("name" to JsonPrimitive("Replaced demo")))
         ktcs!!.put("/v1/plantModel", replacement.toString()).statusCode() shouldBe 200
         assertThat(page().locator("#toasts")).containsText("Plant model replaced: Replaced demo")
         assertThat(page().locator("#model-name")).hasText("Replaced demo")
         assertThat(page().locator("#details")).isHidden()
         page().waitForFunction("n => window.ktcsOverview.drawn().points === n", model()["points"]!!.jsonArray.size)
+        drawnNames("highlightedRoute").shouldBeEmpty()
+        // The bands drawn are exactly what the kernel's vehicles hold now: each its own position, nothing else.
+        eventually(10.seconds) {
+            val held = heldByVehicles()
+            held.size shouldBe 4
+            drawnNames("drawnResources") shouldBe held
+        }
+        drawnNames("drawnRoutes").shouldBeEmpty()
         watched.screenshot("model-replaced")
     }
 })

@@ -149,6 +149,10 @@ function installPlantControls(plant) {
 function exposeForDiagnostics(plant, client, themes) {
   window.ktcsOverview = {
     drawn: () => ({ ...plant.lastDrawn, vehicles: plant.vehicles.drawn.size }),
+    /** The resources drawn as held (allocated or claimed), the paths drawn as routes ahead and as highlighted route. */
+    drawnResources: () => [...plant.vehicles.drawnResources].sort(),
+    drawnRoutes: () => [...plant.vehicles.drawnRoutes].sort(),
+    highlightedRoute: () => [...plant.highlightedRoute],
     pagePositionOf: (kind, name) => plant.pagePositionOf(kind, name),
     connected: () => client.connected,
     /** The style the configured vehicle theme gives a vehicle now. */

@@ -12,6 +12,9 @@ export class VehicleLayer {
     this.orders = new Map();
     this.tracks = new Map();
     this.drawn = new Map();
+    // What the last frame drew as held resources and routes ahead, by name (for diagnostics and tests).
+    this.drawnResources = new Set();
+    this.drawnRoutes = new Set();
   }
 
   /** Takes a (possibly different) model's geometry: every vehicle is placed afresh, not glided from old points. */
@@ -61,6 +64,8 @@ export class VehicleLayer {
   draw(ctx, now) {
     let moving = false;
     this.drawn.clear();
+    this.drawnResources.clear();
+    this.drawnRoutes.clear();
     for (const vehicle of this.vehicles.values()) this.drawResources(ctx, vehicle);
     for (const vehicle of this.vehicles.values()) this.drawRouteAhead(ctx, vehicle);
     for (const vehicle of this.vehicles.values()) {
@@ -151,11 +156,13 @@ export class VehicleLayer {
       for (const name of set) {
         const path = this.geometry.pathsByName.get(name);
         if (path) {
+          this.drawnResources.add(name);
           this.plant.tracePath(ctx, path);
           continue;
         }
         const point = this.geometry.points.get(name);
         if (point) {
+          this.drawnResources.add(name);
           const p = this.plant.view.toScreen(point.x, point.y);
           ctx.moveTo(p.x + 7, p.y);
           ctx.arc(p.x, p.y, 7, 0, 2 * Math.PI);
@@ -182,6 +189,7 @@ export class VehicleLayer {
   drawRouteAhead(ctx, vehicle) {
     const paths = this.routeAhead(vehicle).map((name) => this.geometry.pathsByName.get(name)).filter(Boolean);
     if (paths.length === 0) return;
+    paths.forEach((path) => this.drawnRoutes.add(path.name));
     ctx.save();
     ctx.strokeStyle = routeColour(vehicle);
     ctx.lineWidth = 2;
