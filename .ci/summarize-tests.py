@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Adds up the Surefire reports of all modules into one line: 'N passed, N failed, N skipped'.
 
-Usage: summarize-tests.py [REPOSITORY_ROOT]. Reads */target/surefire-reports/TEST-*.xml under the root (default: the
+Usage: summarize-tests.py [REPOSITORY_ROOT]. Reads **/target/surefire-reports/TEST-*.xml under the root (default: the
 current directory). Exits 1 if any test failed or errored, or if no test ran at all.
 """
 import glob
@@ -11,7 +11,8 @@ import xml.etree.ElementTree as ET
 
 root = sys.argv[1] if len(sys.argv) > 1 else "."
 totals = {"tests": 0, "failures": 0, "errors": 0, "skipped": 0}
-for report in sorted(glob.glob(os.path.join(root, "*", "target", "surefire-reports", "TEST-*.xml"))):
+# Modules may be nested (examples/*), so the reports are searched at any depth.
+for report in sorted(glob.glob(os.path.join(root, "**", "target", "surefire-reports", "TEST-*.xml"), recursive=True)):
     try:
         suites = ET.parse(report).getroot().iter("testsuite")
     except ET.ParseError as error:
@@ -25,6 +26,6 @@ for report in sorted(glob.glob(os.path.join(root, "*", "target", "surefire-repor
 failed = totals["failures"] + totals["errors"]
 passed = totals["tests"] - totals["failures"] - totals["errors"] - totals["skipped"]
 if totals["tests"] == 0:
-    print("no tests ran: no */target/surefire-reports/TEST-*.xml with tests", file=sys.stderr)
+    print("no tests ran: no **/target/surefire-reports/TEST-*.xml with tests", file=sys.stderr)
 print(f"{passed} passed, {failed} failed, {totals['skipped']} skipped")
 sys.exit(1 if failed > 0 or totals["tests"] == 0 else 0)
