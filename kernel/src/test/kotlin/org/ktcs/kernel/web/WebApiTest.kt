@@ -26,10 +26,6 @@ import java.net.URI
 import java.net.http.HttpClient
 import java.net.http.HttpRequest
 import java.net.http.HttpResponse
-import java.net.http.WebSocket
-import java.util.concurrent.CompletionStage
-import java.util.concurrent.LinkedBlockingQueue
-import java.util.concurrent.TimeUnit
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration.Companion.seconds
 
@@ -237,33 +233,13 @@ class WebApiTest : FunSpec({
     test("the WebSocket sends a snapshot per topic, then every change in kernel order; bad messages get an error") {
         val (application, base) = start()
         try {
-            val received = LinkedBlockingQueue<String>()
-            val listener = object : WebSocket.Listener {
-                private val partial = StringBuilder()
+            val socket = WsTestClient(http, base)
+            fun next() = socket.next()
 
-                override fun onText(socket: WebSocket, data: CharSequence, last: Boolean): CompletionStage<*>? {
-                    partial.append(data)
-                    if (last) received.put(partial.toString()).also { partial.clear() }
-                    socket.request(1)
-                    return null
-                }
-            }
-            val ws = URI(base.replace("http:", "ws:") + "/ws")
-            val socket = http.newWebSocketBuilder().buildAsync(ws, listener).get()
-            fun next(): JsonObject {
-                val message = received.poll(10, TimeUnit.SECONDS)!!
-                WebApiContracts.ktcs.violationsOf(
-                    pointer = "/components/schemas/WsServerMessage",
-                    json = message,
-                ) shouldBe
-                    emptyList()
-                return Json.parseToJsonElement(message).jsonObject
-            }
-
-            socket.sendText("""{"type":"subscribe","topics":["nonsense"]}""", true).get()
+            socket.send("""{"type":"subscribe","topics":["nonsense"]}""")
             next()["type"]!!.jsonPrimitive.content shouldBe "error"
 
-            socket.sendText("""{"type":"subscribe","topics":["vehicles","transportOrders"]}""", true).get()
+            socket.send("""{"type":"subscribe","topics":["vehicles","transportOrders"]}""")
             val vehicles = next()
             vehicles["type"]!!.jsonPrimitive.content shouldBe "snapshot"
             vehicles["topic"]!!.jsonPrimitive.content shouldBe "vehicles"
@@ -278,7 +254,7 @@ class WebApiTest : FunSpec({
             numbers shouldBe numbers.sorted()
             events.first()["previous"]!!.toString() shouldBe "null"
             events.map { it["current"]!!.jsonObject.text("state") } shouldBe listOf("RAW", "ACTIVE", "DISPATCHABLE")
-            socket.abort()
+            socket.close()
         } finally {
             application.stop()
         }

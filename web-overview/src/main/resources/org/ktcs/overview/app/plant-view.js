@@ -2,9 +2,11 @@
 // live overlay (vehicles, routes, resources, selection; redrawn while something moves). Only what lies in view is
 // drawn, found through the geometry's grid index, so a plant of 10,000 points stays smooth.
 
-import { buildGeometry, distanceToLine, midpointOf } from './geometry.js';
+import { buildGeometry, midpointOf } from './geometry.js';
 import { ViewTransform } from './view-transform.js';
 import { VehicleLayer } from './vehicle-layer.js';
+import { clamp, drawCross, drawSymbol, locationSymbolSize, traceArrow } from './shapes.js';
+import { installPointerInput } from './pointer-input.js';
 
 const COLOURS = {
   background: '#f6f7f9',
@@ -19,7 +21,6 @@ const COLOURS = {
 };
 const ARROW_MIN_SCREEN_LENGTH = 28;
 const MAX_LABELS = 600;
-const LOCATION_SIZE_MM = 1200;
 const POINT_SIZE_MM = 450;
 
 export class PlantView {
@@ -40,7 +41,7 @@ export class PlantView {
     this.vehicles = new VehicleLayer(this);
     this.staticDirty = true;
     this.frameRequested = false;
-    this.installInteraction();
+    installPointerInput(this);
     new ResizeObserver(() => this.resize()).observe(canvas.parentElement);
     this.resize();
   }
@@ -287,12 +288,12 @@ export class PlantView {
   }
 
   drawLocations(ctx, locations) {
-    const size = clamp(LOCATION_SIZE_MM * this.view.scale, 8, 30);
+    const size = locationSymbolSize(this.view.scale);
     for (const location of locations) {
       const style = this.themes.locationStyle(location.dto, this.geometry.locationTypes.get(location.typeName));
       const p = this.view.toScreen(location.x, location.y);
       drawSymbol(ctx, style, p.x, p.y, size);
-      if (location.locked) drawCross(ctx, p.x, p.y, size * 0.7);
+      if (location.locked) drawCross(ctx, p.x, p.y, size * 0.7, COLOURS.locked);
     }
   }
 
@@ -301,9 +302,9 @@ export class PlantView {
     ctx.fillStyle = COLOURS.label;
     ctx.textAlign = 'center';
     ctx.textBaseline = 'top';
-    const locationSize = clamp(LOCATION_SIZE_MM * this.view.scale, 8, 30);
+    const locationSize = locationSymbolSize(this.view.scale);
     // Location names crowd each other on a zoomed-out large plant; a small plant always shows them.
-    if (inView.locations.length <= 40 || LOCATION_SIZE_MM * this.view.scale >= 12) {
+    if (inView.locations.length <= 40 || locationSize >= 12) {
       for (const location of inView.locations) {
         const p = this.view.toScreen(location.x, location.y);
         ctx.fillText(location.name, p.x, p.y + locationSize / 2 + 3);
@@ -389,134 +390,11 @@ export class PlantView {
     return screen ? { x: box.left + screen.x, y: box.top + screen.y } : null;
   }
 
-  /** The element drawn under a canvas position: vehicles first, then locations, points, paths. */
-  hit(x, y) {
-    const vehicle = this.vehicles.hit(x, y);
-    if (vehicle) return { kind: 'vehicle', name: vehicle };
-    if (!this.geometry) return null;
-    const model = this.view.toModel(x, y);
-    const tolerance = 8 / this.view.scale;
-    const rect = { minX: model.x - tolerance, maxX: model.x + tolerance, minY: model.y - tolerance, maxY: model.y + tolerance };
-    const candidates = [...this.geometry.index.query(rect)].filter((e) => this.isVisible(e));
-    const locationReach = clamp(LOCATION_SIZE_MM * this.view.scale, 8, 30) / 2 / this.view.scale;
-    const byDistance = (kind, reach, distance) => candidates.filter((e) => e.kind === kind)
-      .map((e) => ({ e, d: distance(e) })).filter(({ d }) => d <= reach).sort((a, b) => a.d - b.d)[0]?.e;
-    const pointDistance = (e) => Math.hypot(e.x - model.x, e.y - model.y);
-    const found = byDistance('location', Math.max(locationReach, tolerance), pointDistance)
-      ?? byDistance('point', tolerance, pointDistance)
-      ?? byDistance('path', tolerance * 0.75, (e) => distanceToLine(e.line, model.x, model.y));
-    return found ? { kind: found.kind, name: found.name } : null;
-  }
 
-  installInteraction() {
-    const target = this.overlay;
-    let drag = null;
-    target.addEventListener('pointerdown', (event) => {
-      drag = { x: event.offsetX, y: event.offsetY, moved: 0 };
-      target.setPointerCapture(event.pointerId);
-    });
-    target.addEventListener('pointermove', (event) => {
-      if (!drag) return;
-      const dx = event.offsetX - drag.x;
-      const dy = event.offsetY - drag.y;
-      drag.moved += Math.abs(dx) + Math.abs(dy);
-      drag.x = event.offsetX;
-      drag.y = event.offsetY;
-      if (drag.moved > 4) {
-        this.userMoved = true;
-        this.view.pan(dx, dy);
-        this.invalidate();
-      }
-    });
-    target.addEventListener('pointerup', (event) => {
-      if (drag && drag.moved <= 4) this.onSelect(this.hit(event.offsetX, event.offsetY));
-      drag = null;
-    });
-    // A cancelled gesture (touch taken over by the browser, window lost focus) ends the drag without a selection.
-    const endDrag = () => { drag = null; };
-    target.addEventListener('pointercancel', endDrag);
-    target.addEventListener('lostpointercapture', endDrag);
-    target.addEventListener('wheel', (event) => {
-      event.preventDefault();
-      this.userMoved = true;
-      this.view.zoomAt(Math.exp(-event.deltaY * 0.0015), event.offsetX, event.offsetY);
-      this.invalidate();
-    }, { passive: false });
-  }
 }
 
 function intersects(element, rect) {
   const b = element.bounds;
   if (!b) return element.x >= rect.minX && element.x <= rect.maxX && element.y >= rect.minY && element.y <= rect.maxY;
   return b.maxX >= rect.minX && b.minX <= rect.maxX && b.maxY >= rect.minY && b.minY <= rect.maxY;
-}
-
-function traceArrow(ctx, x, y, angle) {
-  const size = 6;
-  const cos = Math.cos(angle);
-  const sin = Math.sin(angle);
-  ctx.moveTo(x + cos * size, y + sin * size);
-  ctx.lineTo(x - cos * size - sin * size * 0.7, y - sin * size + cos * size * 0.7);
-  ctx.lineTo(x - cos * size + sin * size * 0.7, y - sin * size - cos * size * 0.7);
-  ctx.closePath();
-}
-
-/** Draws a location symbol of a theme style: a shape name or a single character. */
-export function drawSymbol(ctx, style, x, y, size) {
-  const half = size / 2;
-  ctx.save();
-  ctx.fillStyle = style.fill;
-  ctx.strokeStyle = style.stroke;
-  ctx.lineWidth = style.lineWidth ?? 1.5;
-  ctx.beginPath();
-  switch (style.symbol) {
-    case 'none':
-      ctx.restore();
-      return;
-    case 'circle':
-      ctx.arc(x, y, half, 0, 2 * Math.PI);
-      break;
-    case 'triangle':
-      ctx.moveTo(x, y - half);
-      ctx.lineTo(x + half, y + half);
-      ctx.lineTo(x - half, y + half);
-      ctx.closePath();
-      break;
-    case 'diamond':
-      ctx.moveTo(x, y - half);
-      ctx.lineTo(x + half, y);
-      ctx.lineTo(x, y + half);
-      ctx.lineTo(x - half, y);
-      ctx.closePath();
-      break;
-    default:
-      ctx.rect(x - half, y - half, size, size);
-  }
-  ctx.fill();
-  ctx.stroke();
-  if (typeof style.symbol === 'string' && style.symbol.length === 1) {
-    ctx.fillStyle = style.stroke;
-    ctx.font = `bold ${Math.round(size * 0.7)}px system-ui, sans-serif`;
-    ctx.textAlign = 'center';
-    ctx.textBaseline = 'middle';
-    ctx.fillText(style.symbol, x, y + 1);
-  }
-  ctx.restore();
-}
-
-function drawCross(ctx, x, y, size) {
-  ctx.save();
-  ctx.strokeStyle = COLOURS.locked;
-  ctx.lineWidth = 3;
-  ctx.beginPath();
-  ctx.moveTo(x - size, y - size);
-  ctx.lineTo(x + size, y + size);
-  ctx.moveTo(x + size, y - size);
-  ctx.lineTo(x - size, y + size);
-  ctx.stroke();
-  ctx.restore();
-}
-
-export function clamp(value, min, max) {
-  return Math.max(min, Math.min(max, value));
 }

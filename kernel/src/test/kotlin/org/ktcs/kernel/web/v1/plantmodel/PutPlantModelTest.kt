@@ -24,14 +24,9 @@ import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.kernel.core.StepDriverFactory
 import org.ktcs.kernel.extension.KtcsExtension
 import org.ktcs.kernel.web.WebApiClient
-import org.ktcs.kernel.web.contract.WebApiContracts
-import java.net.URI
+import org.ktcs.kernel.web.WsTestClient
 import java.net.http.HttpClient
 import java.net.http.HttpResponse
-import java.net.http.WebSocket
-import java.util.concurrent.CompletionStage
-import java.util.concurrent.LinkedBlockingQueue
-import java.util.concurrent.TimeUnit
 import kotlin.time.Duration.Companion.seconds
 
 /** `PUT /v1/plantModel` on a running kernel: replacing the plant, and every reason to refuse it. */
@@ -148,26 +143,10 @@ class PutPlantModelTest : FunSpec({
     }
 
     test("WebSocket clients are told the model was replaced and get fresh snapshots") {
-        val received = LinkedBlockingQueue<String>()
-        val listener = object : WebSocket.Listener {
-            private val partial = StringBuilder()
-
-            override fun onText(socket: WebSocket, data: CharSequence, last: Boolean): CompletionStage<*>? {
-                partial.append(data)
-                if (last) received.put(partial.toString()).also { partial.clear() }
-                socket.request(1)
-                return null
-            }
-        }
-        val socket = http.newWebSocketBuilder().buildAsync(URI(base.replace("http:", "ws:") + "/ws"), listener).get()
-        fun next(): JsonObject {
-            val message = received.poll(10, TimeUnit.SECONDS)!!
-            WebApiContracts.ktcs.violationsOf(pointer = "/components/schemas/WsServerMessage", json = message) shouldBe
-                emptyList()
-            return Json.parseToJsonElement(message).jsonObject
-        }
+        val socket = WsTestClient(http, base)
+        fun next() = socket.next()
         fun JsonObject.text(key: String) = this[key]!!.jsonPrimitive.content
-        socket.sendText("""{"type":"subscribe","topics":["vehicles"]}""", true).get()
+        socket.send("""{"type":"subscribe","topics":["vehicles"]}""")
         next()["objects"]!!.jsonArray.size shouldBe 4
 
         call("PUT", "/plantModel", changedModel().toString()).statusCode() shouldBe 200
@@ -178,6 +157,6 @@ class PutPlantModelTest : FunSpec({
         snapshot.text("type") shouldBe "snapshot"
         snapshot["objects"]!!.jsonArray.map { it.jsonObject.text("name") } shouldContainExactly
             listOf("Vehicle-01", "Vehicle-02", "Vehicle-03")
-        socket.abort()
+        socket.close()
     }
 })
