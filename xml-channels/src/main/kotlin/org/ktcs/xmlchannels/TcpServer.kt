@@ -1,61 +1,143 @@
 package org.ktcs.xmlchannels
 
+import io.ktor.network.selector.SelectorManager
+import io.ktor.network.sockets.ServerSocket
+import io.ktor.network.sockets.Socket
+import io.ktor.network.sockets.aSocket
+import io.ktor.network.sockets.awaitClosed
+import io.ktor.network.sockets.openReadChannel
+import io.ktor.network.sockets.openWriteChannel
+import io.ktor.utils.io.ByteReadChannel
+import io.ktor.utils.io.ByteWriteChannel
+import io.ktor.utils.io.writeFully
+import kotlinx.coroutines.CoroutineExceptionHandler
+import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.SupervisorJob
+import kotlinx.coroutines.cancel
 import kotlinx.coroutines.launch
-import java.net.InetSocketAddress
-import java.net.ServerSocket
-import java.net.Socket
-import java.net.SocketException
-import java.util.concurrent.ConcurrentHashMap
+import kotlinx.coroutines.runBlocking
+import kotlinx.coroutines.withTimeoutOrNull
+import org.slf4j.LoggerFactory
+import java.util.concurrent.atomic.AtomicInteger
+import java.util.concurrent.atomic.AtomicLong
+
+/** One accepted connection: its channels and who it is, as the log names it. */
+internal class Connection(private val socket: Socket) {
+    val input: ByteReadChannel = socket.openReadChannel()
+    val output: ByteWriteChannel = socket.openWriteChannel(autoFlush = false)
+    val address: String = socket.remoteAddress.toString()
+
+    fun close() = socket.close()
+}
 
 /**
- * A listening socket whose accept loop and connections run in [scope]: each connection in a coroutine of its own,
- * so that one that fails or blocks affects no other. Blocking socket I/O is fine there: the scope's dispatcher is
- * an elastic view of Dispatchers.IO. [close] closes the open connections too, which ends any blocked read or write.
+ * A listening socket on non-blocking I/O: connections are coroutines, not threads, so a client that sends nothing
+ * costs a few kilobytes. Each server has its own selector and scope, so a flood on one port never slows another.
+ * At most [maxConnections] are served at once; a connection beyond that gets [refusal] and is closed.
  */
-internal class TcpServer(private val scope: CoroutineScope, bindAddress: String, port: Int) : AutoCloseable {
-    private val server = ServerSocket().apply {
-        reuseAddress = true
-        bind(InetSocketAddress(bindAddress, port), BACKLOG)
+internal class TcpServer(
+    private val name: String,
+    bindAddress: String,
+    port: Int,
+    private val maxConnections: Int,
+    private val refusal: ByteArray,
+) : AutoCloseable {
+    private val log = LoggerFactory.getLogger(TcpServer::class.java)
+    private val selector = SelectorManager(Dispatchers.IO)
+    private val scope = CoroutineScope(
+        SupervisorJob() + Dispatchers.IO.limitedParallelism(WORKERS) + CoroutineName(name) +
+            // Serving code turns every failure of a connection into a log line; this is the last safety net.
+            CoroutineExceptionHandler { _, error -> log.error("{}: unexpected failure", name, error) },
+    )
+    private val server: ServerSocket = runBlocking {
+        aSocket(selector).tcp().bind(bindAddress, port) {
+            reuseAddress = true
+            backlogSize = BACKLOG
+        }
     }
-    private val connections = ConcurrentHashMap.newKeySet<Socket>()
+    private val open = AtomicInteger()
+    private val refusedSinceLog = AtomicLong()
+
+    @Volatile
+    private var lastRefusalLog = 0L
 
     /** The port actually bound (the configured one, or a free one for 0). */
-    val port: Int get() = server.localPort
+    val port: Int = (server.localAddress as io.ktor.network.sockets.InetSocketAddress).port
 
-    fun start(serve: suspend (Socket) -> Unit) {
+    /** How many connections are served now. */
+    val connections: Int get() = open.get()
+
+    fun start(serve: suspend (Connection) -> Unit) {
         scope.launch {
             while (true) {
-                val socket = acceptOrNull() ?: break
-                connections += socket
-                // close() may have run between accept and add; then nobody else would close this one.
-                if (server.isClosed) socket.close()
-                scope.launch { serveAndClose(socket, serve) }
+                val socket = try {
+                    server.accept()
+                } catch (_: Exception) {
+                    break // closed
+                }
+                scope.launch { serveOrRefuse(Connection(socket), serve) }
             }
         }
     }
 
-    private suspend fun serveAndClose(socket: Socket, serve: suspend (Socket) -> Unit) {
+    private suspend fun serveOrRefuse(connection: Connection, serve: suspend (Connection) -> Unit) {
+        if (open.incrementAndGet() > maxConnections) {
+            open.decrementAndGet()
+            return refuse(connection)
+        }
         try {
-            socket.use { serve(it) }
+            serve(connection)
         } finally {
-            connections -= socket
+            open.decrementAndGet()
+            connection.close()
         }
     }
 
-    private fun acceptOrNull(): Socket? = try {
-        server.accept()
-    } catch (error: SocketException) {
-        if (server.isClosed) null else throw error
+    private suspend fun refuse(connection: Connection) {
+        withTimeoutOrNull(REFUSAL_TIMEOUT_MILLIS) {
+            runCatching {
+                connection.output.writeFully(refusal)
+                connection.output.flush()
+            }
+        }
+        connection.close()
+        logRefusal(connection.address)
+    }
+
+    /** One warning per few seconds, with a count, so that a flood cannot fill the log. */
+    private fun logRefusal(address: String) {
+        val refused = refusedSinceLog.incrementAndGet()
+        val now = System.nanoTime()
+        if (now - lastRefusalLog < REFUSAL_LOG_INTERVAL_NANOS && lastRefusalLog != 0L) return
+        lastRefusalLog = now
+        refusedSinceLog.addAndGet(-refused)
+        log.warn(
+            "{}: refused {} connection(s), the last from {}: {} connections are served already",
+            name,
+            refused,
+            address,
+            maxConnections,
+        )
     }
 
     override fun close() {
         server.close()
-        connections.forEach(Socket::close)
+        scope.cancel()
+        // The listening socket is closed on the selector; wait for it, so that the port is free on return.
+        runBlocking { withTimeoutOrNull(CLOSE_TIMEOUT_MILLIS) { server.awaitClosed() } }
+        selector.close()
     }
 
     private companion object {
-        // Bursts of host connections (openTCS hosts open one per telegram) must not be refused.
+        // Bursts of host connections (openTCS hosts open one per telegram) must not be refused by the OS.
         const val BACKLOG = 200
+
+        // Parsing telegrams and rendering documents is all the CPU work here; I/O waits cost no thread.
+        const val WORKERS = 4
+        const val REFUSAL_TIMEOUT_MILLIS = 1_000L
+        const val CLOSE_TIMEOUT_MILLIS = 2_000L
+        const val REFUSAL_LOG_INTERVAL_NANOS = 5_000_000_000L
     }
 }

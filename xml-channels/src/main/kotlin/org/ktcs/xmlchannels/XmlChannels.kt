@@ -13,14 +13,14 @@ import org.ktcs.xmlchannels.orders.ScriptFiles
 import org.ktcs.xmlchannels.status.StatusChannelServer
 import org.ktcs.xmlchannels.status.StatusMessages
 import org.slf4j.LoggerFactory
-import java.net.Socket
 import java.time.Clock
 import java.util.concurrent.CopyOnWriteArrayList
 
 /**
  * The XML order and status channels, openTCS 4.x's TCP host interface. [start] listens on both ports, [close]
- * stops listening and drops every connection. All I/O runs in this component's own scope, off the kernel context;
- * the kernel is reached only through [KernelServices].
+ * stops listening and drops every connection. Each channel listens on non-blocking I/O in a scope of its own (see
+ * [TcpServer]), off the kernel context, so that neither can silence the other; the kernel is reached only through
+ * [KernelServices].
  */
 class XmlChannels(
     private val services: KernelServices,
@@ -29,7 +29,7 @@ class XmlChannels(
 ) : AutoCloseable {
     private val log = LoggerFactory.getLogger(XmlChannels::class.java)
     private val scope = CoroutineScope(
-        SupervisorJob() + Dispatchers.IO.limitedParallelism(MAX_THREADS) + CoroutineName("xml-channels") +
+        SupervisorJob() + Dispatchers.Default + CoroutineName("xml-channels") +
             CoroutineExceptionHandler { _, error -> log.error("XML channels: unexpected failure", error) },
     )
     private val servers = CopyOnWriteArrayList<TcpServer>()
@@ -54,9 +54,9 @@ class XmlChannels(
         try {
             ScriptFiles(settings.scriptsDirectory).writeTemplate()
             val orderChannel = OrderChannelServer(services.transportOrders, settings)
-            ordersPort = listen(settings.ordersPort, orderChannel::serve)
+            ordersPort = listen("XML order channel", settings.ordersPort, settings.ordersMaxConnections, orderChannel::serve)
             scope.launch { statusChannel.broadcast(services.events()) }
-            statusPort = listen(settings.statusPort, statusChannel::serve)
+            statusPort = listen("XML status channel", settings.statusPort, settings.statusMaxConnections, statusChannel::serve)
         } catch (error: Exception) {
             close()
             throw error
@@ -64,8 +64,9 @@ class XmlChannels(
         log.info("XML channels: orders on port {}, status on port {}", ordersPort, statusPort)
     }
 
-    private fun listen(port: Int, serve: suspend (Socket) -> Unit): Int {
-        val server = TcpServer(scope, settings.bindAddress, port)
+    private fun listen(name: String, port: Int, limit: Int, serve: suspend (Connection) -> Unit): Int {
+        val refusal = "kTCS: too many connections to the $name (limit $limit); try again later\r\n"
+        val server = TcpServer(name, settings.bindAddress, port, limit, refusal.toByteArray(Charsets.UTF_8))
         servers += server
         server.start(serve)
         return server.port
@@ -74,10 +75,5 @@ class XmlChannels(
     override fun close() {
         servers.forEach(TcpServer::close)
         scope.cancel()
-    }
-
-    private companion object {
-        // Each order connection and each status client blocks up to two threads in socket I/O.
-        const val MAX_THREADS = 512
     }
 }

@@ -33,9 +33,15 @@ object KtcsSettings {
     )
     val webAllowedOrigins = Setting(
         "web.allowedOrigins",
-        "*",
-        "Value of the Access-Control-Allow-Origin header for browser clients from other origins (empty: none).",
+        "",
+        "Origins whose web pages may use the web API, comma-separated (e.g. https://mes.example.com), or * for any; " +
+            "kTCS's own pages always may (empty: no others).",
         { it },
+    )
+    val webAllowLocalShutdown = booleanSetting(
+        "web.allowLocalShutdown",
+        false,
+        "Let DELETE /v1/kernel shut kTCS down from this machine without the access key (it always needs one of the two).",
     )
     val webMaxRequestBodySize = longSetting(
         "web.maxRequestBodySize",
@@ -60,7 +66,20 @@ object KtcsSettings {
         "xml.orders.idleTimeout",
         10_000,
         1L..3_600_000L,
-        "Milliseconds the XML order channel waits for a client that sends nothing before it closes the connection.",
+        "Milliseconds an XML order channel client has to send its whole telegram; a slower one is closed without a " +
+            "receipt.",
+    )
+    val xmlOrdersMaxConnections = intSetting(
+        "xml.orders.maxConnections",
+        100,
+        1..100_000,
+        "XML order channel connections served at once; more are refused with a line saying so.",
+    )
+    val xmlStatusMaxConnections = intSetting(
+        "xml.status.maxConnections",
+        100,
+        1..100_000,
+        "XML status channel clients served at once; more are refused with a line saying so.",
     )
     val xmlOrdersInputLimit =
         intSetting("xml.orders.inputLimit", 102_400, 1..67_108_864, "The largest XML order telegram, in bytes.")
@@ -269,6 +288,7 @@ object KtcsSettings {
         webPort,
         webAccessKey,
         webAllowedOrigins,
+        webAllowLocalShutdown,
         webMaxRequestBodySize,
         webSocketBufferSize,
         xmlOrdersPort,
@@ -276,8 +296,10 @@ object KtcsSettings {
         xmlBindAddress,
         xmlOrdersIdleTimeout,
         xmlOrdersInputLimit,
+        xmlOrdersMaxConnections,
         xmlStatusSeparator,
         xmlStatusBufferSize,
+        xmlStatusMaxConnections,
         xmlScriptsDirectory,
         logLevel,
         kernelEnableDrivers,

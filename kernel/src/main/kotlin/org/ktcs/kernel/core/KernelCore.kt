@@ -29,6 +29,7 @@ import org.ktcs.kernel.events.Notifications
 import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.model.PlantModelValidator
 import org.ktcs.kernel.orders.OrderLifecycle
+import org.ktcs.kernel.orders.XmlSafeText
 import org.ktcs.kernel.orders.TransportOrderFactory
 import org.ktcs.kernel.vehicles.VehicleControllers
 import org.ktcs.kernel.vehicles.VehicleEnvironment
@@ -119,6 +120,9 @@ class KernelCore(
     }
 
     fun createOrderSequence(creation: OrderSequenceCreation): OrderSequence {
+        XmlSafeText.require(creation.name, "the order sequence name '${XmlSafeText.printable(creation.name)}'")
+        XmlSafeText.require(creation.type, "order sequence '${XmlSafeText.printable(creation.name)}': the type")
+        XmlSafeText.requireProperties(creation.properties, "order sequence '${XmlSafeText.printable(creation.name)}'")
         val name = if (creation.incompleteName) names.complete(creation.name) else creation.name
         if (nameTaken(name)) throw ObjectExistsException("an object named '$name' exists already")
         creation.intendedVehicle?.let { plant.vehicle(it) }

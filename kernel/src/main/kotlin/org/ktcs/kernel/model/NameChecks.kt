@@ -1,11 +1,13 @@
 package org.ktcs.kernel.model
 
 import org.ktcs.api.model.PlantObject
+import org.ktcs.kernel.orders.XmlSafeText
 
 /** Names identify objects of every kind at once, as in openTCS, so a point and a path must not share one. */
 internal fun nameProblems(index: ModelIndex): List<ModelProblem> {
     val objects = index.model.allObjects().toList()
     return objects.filter { it.name.isBlank() }.map { it.error("name must not be blank") } +
+        objects.mapNotNull { o -> XmlSafeText.firstUnsafe(o.name)?.let { o.error("name has a character XML cannot carry: $it") } } +
         duplicateNameProblems(objects.filter { it.name.isNotBlank() })
 }
 

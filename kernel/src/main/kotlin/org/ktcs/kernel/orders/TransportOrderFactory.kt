@@ -18,7 +18,8 @@ import org.ktcs.kernel.workingset.ObjectNames
  * Turns a [TransportOrderCreation] into a RAW [TransportOrder], with openTCS's rules: a unique name (completed if
  * incomplete), at least one destination, a location destination's operation allowed by its type and by at least one
  * of its links (links without operations allow all; NOP is always allowed), a point destination's operation MOVE
- * or PARK, known intended vehicle and dependencies, and a wrapping sequence that accepts the order.
+ * or PARK, known intended vehicle and dependencies, and a wrapping sequence that accepts the order. Names, type,
+ * operations and properties must hold only characters XML can carry ([XmlSafeText]).
  */
 class TransportOrderFactory(private val clock: KernelClock, private val names: ObjectNames) {
     fun create(
@@ -28,6 +29,7 @@ class TransportOrderFactory(private val clock: KernelClock, private val names: O
         orderExists: (String) -> Boolean,
         sequence: (String) -> OrderSequence?,
     ): TransportOrder {
+        checkText(creation)
         val name = if (creation.incompleteName) names.complete(creation.name) else creation.name
         if (name.isBlank()) throw InvalidRequestException("a transport order needs a name")
         if (nameTaken(name)) throw ObjectExistsException("an object named '$name' exists already")
@@ -72,6 +74,19 @@ class TransportOrderFactory(private val clock: KernelClock, private val names: O
             peripheralReservationToken = creation.peripheralReservationToken,
             properties = creation.properties,
         )
+    }
+
+    private fun checkText(creation: TransportOrderCreation) {
+        XmlSafeText.require(creation.name, "the transport order name '${XmlSafeText.printable(creation.name)}'")
+        val order = "transport order '${XmlSafeText.printable(creation.name)}'"
+        XmlSafeText.require(creation.type, "$order: the type")
+        XmlSafeText.requireProperties(creation.properties, order)
+        creation.destinations.forEachIndexed { index, destination ->
+            val where = "$order, destination ${index + 1}"
+            XmlSafeText.require(destination.target, "$where: the location or point name")
+            XmlSafeText.require(destination.operation, "$where: the operation")
+            XmlSafeText.requireProperties(destination.properties, where)
+        }
     }
 
     private fun driveOrderName(index: Int, destination: Destination) = "${index.toString().padStart(

@@ -6,49 +6,56 @@ import org.ktcs.api.service.TransportOrderService
 import org.ktcs.xmlchannels.HostXml
 import org.ktcs.xmlchannels.XmlChannelSettings
 import org.slf4j.LoggerFactory
+import io.ktor.utils.io.writeFully
+import kotlinx.coroutines.withTimeoutOrNull
+import org.ktcs.kernel.orders.XmlSafeText
+import org.ktcs.xmlchannels.Connection
 import java.io.IOException
-import java.net.Socket
 import javax.xml.stream.XMLStreamException
 
 /**
  * The order channel's protocol on one connection: read one `tcsOrderSet` telegram, create its orders, answer with a
- * `tcsResponseSet`, close. A telegram that is too long, too slow, not well-formed or not a `tcsOrderSet` creates
- * nothing: the connection is closed with one warning in the log.
+ * `tcsResponseSet`, close. A telegram that is too long, not complete by its deadline, not well-formed or not a
+ * `tcsOrderSet` creates nothing: the connection is closed with one warning in the log. Nothing a telegram holds can
+ * fail more than its own connection.
  */
 internal class OrderChannelServer(orders: TransportOrderService, private val settings: XmlChannelSettings) {
     private val log = LoggerFactory.getLogger(OrderChannelServer::class.java)
     private val reader = TelegramReader(settings.inputLimit)
     private val handler = OrderTelegramHandler(orders, ScriptFiles(settings.scriptsDirectory))
 
-    suspend fun serve(socket: Socket) {
-        socket.soTimeout = settings.idleTimeout.inWholeMilliseconds.toInt()
+    suspend fun serve(connection: Connection) {
+        val deadline = settings.idleTimeout
         val orderSet = try {
-            parse(reader.read(socket.getInputStream()))
+            val bytes = withTimeoutOrNull(deadline) { reader.read(connection.input) }
+                ?: return reject(connection, "telegram not complete within $deadline")
+            parse(bytes)
         } catch (error: TelegramRejectedException) {
-            return reject(socket, error.reason)
+            return reject(connection, error.reason)
         } catch (error: IOException) {
-            return reject(socket, "connection failed: ${error.message}")
+            return reject(connection, "connection failed: ${error.message}")
         }
         val receipt = HostXml.write(handler.handle(orderSet)).toByteArray(Charsets.UTF_8)
-        try {
-            socket.getOutputStream().apply {
-                write(receipt)
-                flush()
+        val sent = withTimeoutOrNull(deadline) {
+            try {
+                connection.output.writeFully(receipt)
+                connection.output.flush()
+                true
+            } catch (error: IOException) {
+                false.also { couldNotSend(connection, error.message) }
             }
-        } catch (error: IOException) {
-            log.warn(
-                "XML order channel: could not send the receipt to {}: {}",
-                socket.remoteSocketAddress,
-                error.message,
-            )
         }
+        if (sent == null) couldNotSend(connection, "the client did not read it within $deadline")
     }
 
-    private fun reject(socket: Socket, reason: String) =
+    private fun couldNotSend(connection: Connection, reason: String?) =
+        log.warn("XML order channel: could not send the receipt to {}: {}", connection.address, reason)
+
+    private fun reject(connection: Connection, reason: String) =
         log.warn(
             "XML order channel: closed the connection from {} without creating orders: {}",
-            socket.remoteSocketAddress,
-            reason,
+            connection.address,
+            XmlSafeText.printable(reason),
         )
 
     private fun parse(bytes: ByteArray): OrderSetTO = try {

@@ -3,13 +3,16 @@ package org.ktcs.xmlchannels.orders
 import org.ktcs.api.error.KernelException
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.service.TransportOrderService
+import org.ktcs.kernel.orders.XmlSafeText
 
 /**
  * Creates the orders of one telegram through the kernel's services, one after the other, and answers each. An
  * order the kernel refuses gets a failed response with the kernel's reason; the others are created all the same.
  */
 internal class OrderTelegramHandler(private val orders: TransportOrderService, private val scripts: ScriptFiles) {
-    suspend fun handle(orderSet: OrderSetTO): ResponseSetTO = ResponseSetTO(orderSet.order.map { respond(it) })
+    // An XML 1.1 telegram can carry characters (`&#x1;`) that an XML 1.0 receipt cannot echo.
+    suspend fun handle(orderSet: OrderSetTO): ResponseSetTO =
+        ResponseSetTO(orderSet.order.map { respond(it.copy(id = XmlSafeText.printable(it.id))) })
 
     private suspend fun respond(order: OrderTO): ResponseTO = when (order.type) {
         TRANSPORT -> create(order.id, TRANSPORT_RESPONSE) { order.toCreation() }
@@ -21,7 +24,7 @@ internal class OrderTelegramHandler(private val orders: TransportOrderService, p
         val script = try {
             scripts.read(order.fileName ?: throw TelegramContentException("transportScript without fileName"))
         } catch (error: TelegramContentException) {
-            return ScriptResponseTO(parsingSuccessful = false, id = order.id, reason = error.message)
+            return ScriptResponseTO(parsingSuccessful = false, id = order.id, reason = error.message?.let(XmlSafeText::printable))
         }
         return ScriptResponseTO(parsingSuccessful = true, id = order.id, transport = runOrders(order.id, script))
     }
@@ -49,5 +52,11 @@ internal class OrderTelegramHandler(private val orders: TransportOrderService, p
     }
 
     private fun failed(id: String, xsiType: String?, reason: String) =
-        TransportResponseTO(xsiType, executionSuccessful = false, orderName = "", id = id, reason = reason)
+        TransportResponseTO(
+            xsiType,
+            executionSuccessful = false,
+            orderName = "",
+            id = id,
+            reason = XmlSafeText.printable(reason),
+        )
 }

@@ -1,22 +1,22 @@
 package org.ktcs.xmlchannels.orders
 
+import io.ktor.utils.io.ByteReadChannel
+import io.ktor.utils.io.readAvailable
 import java.io.ByteArrayOutputStream
-import java.io.InputStream
-import java.net.SocketTimeoutException
 
 /** Why a connection was closed without creating anything; [reason] goes into the log. */
 internal class TelegramRejectedException(val reason: String) : Exception(reason)
 
 /**
  * Reads one order telegram: up to the end of the stream (the client half-closed) or up to `\r\n\r\n`, whichever
- * comes first. The stream's read timeout is the idle timeout.
+ * comes first. The caller bounds the time the whole telegram may take.
  */
 internal class TelegramReader(private val limit: Int) {
-    fun read(input: InputStream): ByteArray {
+    suspend fun read(input: ByteReadChannel): ByteArray {
         val telegram = ByteArrayOutputStream()
         val buffer = ByteArray(BUFFER_SIZE)
         while (true) {
-            val count = readOrTimeOut(input, buffer)
+            val count = input.readAvailable(buffer, 0, buffer.size)
             if (count < 0) return telegram.toByteArray()
             val scanFrom = (telegram.size() - TERMINATOR.size + 1).coerceAtLeast(0)
             telegram.write(buffer, 0, count)
@@ -25,12 +25,6 @@ internal class TelegramReader(private val limit: Int) {
             val end = indexOfTerminator(bytes, scanFrom)
             if (end >= 0) return bytes.copyOf(end)
         }
-    }
-
-    private fun readOrTimeOut(input: InputStream, buffer: ByteArray): Int = try {
-        input.read(buffer)
-    } catch (_: SocketTimeoutException) {
-        throw TelegramRejectedException("no data within the idle timeout")
     }
 
     private fun indexOfTerminator(bytes: ByteArray, from: Int): Int =

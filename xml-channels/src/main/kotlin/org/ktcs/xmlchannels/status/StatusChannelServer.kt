@@ -10,7 +10,8 @@ import kotlinx.coroutines.flow.retry
 import kotlinx.coroutines.flow.update
 import org.ktcs.api.event.KernelEvent
 import org.slf4j.LoggerFactory
-import java.net.Socket
+import org.ktcs.kernel.orders.XmlSafeText
+import org.ktcs.xmlchannels.Connection
 import java.util.concurrent.ConcurrentHashMap
 
 /**
@@ -25,8 +26,8 @@ internal class StatusChannelServer(private val messages: StatusMessages, private
     /** How many clients are connected now. */
     val clientCount: StateFlow<Int> = connected.asStateFlow()
 
-    suspend fun serve(socket: Socket) {
-        val client = StatusClient(socket, bufferSize)
+    suspend fun serve(connection: Connection) {
+        val client = StatusClient(connection, bufferSize)
         clients += client
         connected.update { it + 1 }
         try {
@@ -44,7 +45,18 @@ internal class StatusChannelServer(private val messages: StatusMessages, private
             log.warn("XML status channel: subscribing to kernel events again after: {}", error.message)
             delay(RESUBSCRIBE_DELAY)
             true
-        }.collect { event -> messages.render(event)?.let { send(it.toByteArray(Charsets.UTF_8)) } }
+        }.collect { event -> render(event)?.let { send(it.toByteArray(Charsets.UTF_8)) } }
+    }
+
+    /** One event that cannot be rendered (kernel checks names, but extensions may not) is skipped, not fatal. */
+    private fun render(event: KernelEvent): String? = try {
+        messages.render(event)
+    } catch (error: Exception) {
+        log.warn(
+            "XML status channel: skipped a message that cannot be written as XML: {}",
+            error.message?.let(XmlSafeText::printable),
+        )
+        null
     }
 
     private fun send(document: ByteArray) {

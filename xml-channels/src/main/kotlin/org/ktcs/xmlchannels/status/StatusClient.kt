@@ -1,57 +1,69 @@
 package org.ktcs.xmlchannels.status
 
+import io.ktor.utils.io.readAvailable
+import io.ktor.utils.io.writeFully
+import kotlinx.coroutines.Job
+import kotlinx.coroutines.cancel
+import kotlinx.coroutines.cancelChildren
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.job
 import kotlinx.coroutines.launch
+import org.ktcs.xmlchannels.Connection
 import java.io.IOException
-import java.net.Socket
-import java.net.SocketAddress
 
 /**
- * One status channel client: a bounded queue of documents and the socket they are written to. Whatever the client
- * sends is read and thrown away, which also notices when it hangs up.
+ * One status channel client: a bounded queue of documents and the connection they are written to. Whatever the
+ * client sends is read and thrown away, which also notices when it hangs up.
  */
-internal class StatusClient(private val socket: Socket, capacity: Int) {
+internal class StatusClient(private val connection: Connection, capacity: Int) {
     private val outbox = Channel<ByteArray>(capacity)
 
-    val address: SocketAddress? get() = socket.remoteSocketAddress
+    val address: String get() = connection.address
 
     /** Queues [document]; `false` only if the queue is full, i.e. the client does not keep up. */
     fun offer(document: ByteArray): Boolean = outbox.trySend(document).let { it.isSuccess || it.isClosed }
 
-    /** Writes queued documents until the client hangs up or is closed. */
+    @Volatile
+    private var serving: Job? = null
+
+    /**
+     * Writes queued documents until the client hangs up or is dropped. The connection itself is closed by whoever
+     * accepted it, once this returns: closing it while a write is pending would race with that write.
+     */
     suspend fun serve() = coroutineScope {
-        launch { closeAfter(::discardInput) }
-        closeAfter(::writeQueued)
+        serving = coroutineContext.job
+        launch {
+            ignoringIOFailure(::discardInput)
+            this@coroutineScope.cancel("the client hung up")
+        }
+        ignoringIOFailure(::writeQueued)
+        coroutineContext.cancelChildren()
     }
 
-    /** Idempotent; a blocked write or read fails at once. */
+    /** Drops the client: ends a pending write at once; idempotent. */
     fun close() {
         outbox.close()
-        socket.close()
+        serving?.cancel()
     }
 
     private suspend fun writeQueued() {
-        val output = socket.getOutputStream()
         for (document in outbox) {
-            output.write(document)
-            output.flush()
+            connection.output.writeFully(document)
+            connection.output.flush()
         }
     }
 
-    private fun discardInput() {
-        val input = socket.getInputStream()
+    private suspend fun discardInput() {
         val buffer = ByteArray(DISCARD_BUFFER_SIZE)
-        while (input.read(buffer) >= 0) continue
+        while (connection.input.readAvailable(buffer, 0, buffer.size) >= 0) continue
     }
 
-    private suspend fun closeAfter(block: suspend () -> Unit) {
+    private suspend fun ignoringIOFailure(block: suspend () -> Unit) {
         try {
             block()
         } catch (_: IOException) {
-            // The client hung up or was dropped; either way it is done.
-        } finally {
-            close()
+            // The client hung up or the connection failed; either way it is done.
         }
     }
 

@@ -59,7 +59,7 @@ class OrderChannelRejectionTest : FunSpec({
     }
 
     test("a client that stops sending before the telegram ends") {
-        rejected("no data within the idle timeout") { channels ->
+        rejected("telegram not complete within") { channels ->
             withContext(Dispatchers.IO) {
                 HostClient.connect(channels.ordersPort).use { socket ->
                     socket.getOutputStream().write(telegram.take(100).toByteArray())
