@@ -25,8 +25,21 @@ class DefaultRouter(private val configuration: RouterConfiguration = RouterConfi
         graphs = RoutingGraphs(model, configuration)
     }
 
-    override fun isGenerallyRoutable(order: TransportOrder): Boolean =
-        isRoutableInPrinciple(graphs.general, legCandidates(order, includeLockedLocations = true))
+    /**
+     * Whether some vehicle that may take [order] (its intended vehicle, else any) could route it in principle, on the
+     * paths it may drive and around the order's `tcs:resourcesToAvoid`; locks are ignored, as they are temporary.
+     */
+    override fun isGenerallyRoutable(order: TransportOrder): Boolean {
+        val legs = legCandidates(order, includeLockedLocations = true)
+        if (!isRoutableInPrinciple(graphs.general, legs)) return false
+        val avoided = AvoidedResources.of(graphs.model, parseResourceNames(order.properties[RESOURCES_TO_AVOID_PROPERTY]), "")
+        val usableLegs = legs.map { points -> points.filter { it !in avoided.points } }
+        val vehicles = order.intendedVehicle?.let { listOfNotNull(graphs.model.vehicle(it)) } ?: graphs.model.vehicles
+        if (vehicles.isEmpty()) return avoided.isEmpty() || isRoutableInPrinciple(graphs.general.without(avoided), usableLegs)
+        return vehicles.map(configuration::graphKeyOf).distinct().any { key ->
+            isRoutableInPrinciple(graphs.generalFor(key).without(avoided), usableLegs)
+        }
+    }
 
     override fun routeOrder(vehicle: Vehicle, sourcePoint: String, order: TransportOrder): List<DriveOrder>? {
         val avoided = parseResourceNames(order.properties[RESOURCES_TO_AVOID_PROPERTY])

@@ -1,6 +1,7 @@
 package org.ktcs.kernel.routing
 
 import org.jgrapht.Graphs
+import org.jgrapht.graph.MaskSubgraph
 
 /**
  * Whether some point of each leg can be reached from a reachable point of the leg before, in [graph]. The first leg
@@ -28,3 +29,7 @@ private fun RoutingGraph.reachableFrom(starts: Set<String>): Set<String> {
     }
     return visited
 }
+
+/** This graph without the points and paths of [avoided]; a view, not a copy. */
+internal fun RoutingGraph.without(avoided: AvoidedResources): RoutingGraph =
+    if (avoided.isEmpty()) this else MaskSubgraph(this, { it in avoided.points }, { it.path in avoided.paths })

@@ -8,9 +8,16 @@ import org.ktcs.api.model.PlantModel
  */
 internal class RoutingGraphs(val model: PlantModel, private val configuration: RouterConfiguration) {
     private val searches = HashMap<GraphKey, RouteSearch>()
+    private val generalByKey = HashMap<GraphKey, RoutingGraph>()
 
     /** Every drivable path direction, locked or not, at cost 1: what general routability asks about. */
     val general: RoutingGraph by lazy { buildRoutingGraph(model, includeLocked = true) { _, _ -> 1 } }
+
+    /** Every path direction vehicles of [key] may drive, locked or not: what they could route in principle. */
+    fun generalFor(key: GraphKey): RoutingGraph = generalByKey.getOrPut(key) {
+        val costs = EdgeCosts(model, configuration, key)
+        buildRoutingGraph(model, includeLocked = true, costs::of)
+    }
 
     /** The search over the graph for vehicles of [key], without resources to avoid. */
     fun searchFor(key: GraphKey): RouteSearch = searches.getOrPut(key) {

@@ -205,29 +205,41 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         if (currentOrder == null) occupyPosition(vehicle.integrationLevel)
     }
 
-    /** Holds exactly the vehicle's current point, as its integration level asks. */
+    /**
+     * Holds exactly the vehicle's current point, as its integration level asks. If another vehicle holds that point
+     * (the vehicle was placed or reported there while ignored), it is not allocated twice: the vehicle drops to
+     * TO_BE_NOTICED, with a notification, until its position is free.
+     */
     fun occupyPosition(level: IntegrationLevel) {
         val point = env.plant.vehicle(name).currentPosition
-        val wanted = if (point != null && level >= IntegrationLevel.TO_BE_RESPECTED) setOf(point) else emptySet()
+        val holders = positionHolders()
+        val effective = if (holders.isNotEmpty() && level >= IntegrationLevel.TO_BE_RESPECTED) {
+            env.notifications.publish(name, NotificationLevel.IMPORTANT, positionTakenText(holders, level))
+            env.plant.updateVehicle(name) { it.copy(integrationLevel = IntegrationLevel.TO_BE_NOTICED) }
+            IntegrationLevel.TO_BE_NOTICED
+        } else {
+            level
+        }
+        val wanted = if (point != null && effective >= IntegrationLevel.TO_BE_RESPECTED) setOf(point) else emptySet()
         if (held.asList() == listOfNotNull(wanted.takeIf { it.isNotEmpty() })) return
         env.scheduler().free(this, held.releaseAllBut(emptySet()))
         if (wanted.isNotEmpty()) {
-            val others = env.scheduler().allocations().filter { (client, resources) ->
-                client != name &&
-                    point in resources
-            }.keys
-            if (others.isNotEmpty()) {
-                env.notifications.publish(
-                    name,
-                    NotificationLevel.IMPORTANT,
-                    "vehicle $name reports position $point, which ${others.joinToString()} holds",
-                )
-            }
             env.scheduler().allocateNow(this, wanted)
             held.reset(wanted)
         }
         publishResources()
     }
+
+    /** The other vehicles that hold the point this vehicle stands on. */
+    fun positionHolders(): Set<String> {
+        val point = env.plant.vehicle(name).currentPosition ?: return emptySet()
+        return env.scheduler().allocations().filter { (client, resources) -> client != name && point in resources }.keys
+    }
+
+    fun positionTakenText(holders: Set<String>, level: IntegrationLevel): String =
+        "vehicle $name stays below TO_BE_RESPECTED instead of $level: its position " +
+            "${env.plant.vehicle(name).currentPosition} is held by ${holders.sorted().joinToString()}; " +
+            "raise it again once the position is free"
 
     private fun pathLength(resources: Set<String>): Long = resources.sumOf {
         env.plant.staticModel().path(it)?.length

@@ -131,6 +131,13 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
                 "vehicle '$vehicle' is processing order '${controller.transportOrder}'; withdraw it before setting $level",
             )
         }
+        if (level >= IntegrationLevel.TO_BE_RESPECTED && controller.transportOrder == null) {
+            controller.positionHolders().takeIf { it.isNotEmpty() }?.let { holders ->
+                val text = controller.positionTakenText(holders, level)
+                env.notifications.publish(vehicle, NotificationLevel.IMPORTANT, text)
+                throw IllegalStateChangeException(text)
+            }
+        }
         env.plant.updateVehicle(vehicle) { it.copy(integrationLevel = level) }
         // A vehicle on its way keeps what it was granted; its position is settled when its order ends.
         if (controller.transportOrder == null) controller.occupyPosition(level)

@@ -1,0 +1,54 @@
+package org.ktcs.kernel.web.plugins
+
+import io.ktor.http.ContentType
+import io.ktor.http.HttpHeaders
+import io.ktor.http.HttpMethod
+import io.ktor.http.HttpStatusCode
+import io.ktor.server.application.ApplicationCall
+import io.ktor.server.application.createRouteScopedPlugin
+import io.ktor.server.request.contentType
+
+/** A header any client may set to say "I am a program, not a form": browsers must ask (preflight) before sending it. */
+const val CLIENT_HEADER = "X-Requested-With"
+
+/**
+ * Keeps web pages from changing kTCS (cross-site request forgery): a page may send a "simple" request (a form, or
+ * `fetch` with a `text/plain` body) anywhere without asking, so every request that changes something must have a
+ * JSON body or a header such a request cannot carry ([CLIENT_HEADER] or the access key). A request a browser sends
+ * (it has an `Origin`) must also come from kTCS's own pages or an allowed origin.
+ *
+ * Programs (curl, openTCS clients) send no `Origin` and are unaffected unless they send a body that is not JSON.
+ */
+val CrossSiteGuard = createRouteScopedPlugin("CrossSiteGuard", ::CrossSiteGuardConfig) {
+    val origins = BrowserOrigins(pluginConfig.allowedOrigins)
+    onCall { call ->
+        if (call.request.local.method !in CHANGING) return@onCall
+        refusal(call, origins)?.let { (status, message) -> call.respondErrors(status, message) }
+    }
+}
+
+class CrossSiteGuardConfig {
+    var allowedOrigins: String = ""
+}
+
+private val CHANGING = setOf(HttpMethod.Post, HttpMethod.Put, HttpMethod.Delete, HttpMethod.Patch)
+
+private fun refusal(call: ApplicationCall, origins: BrowserOrigins): Pair<HttpStatusCode, String>? {
+    val type = call.request.headers[HttpHeaders.ContentType]?.let { call.request.contentType() }
+    if (type != null && !type.match(ContentType.Application.Json)) {
+        return HttpStatusCode.UnsupportedMediaType to
+            "request bodies must be JSON (Content-Type: application/json), not '${type.withoutParameters()}'"
+    }
+    val origin = call.request.headers[HttpHeaders.Origin]
+    if (origin != null && !origins.allows(origin, call)) {
+        return HttpStatusCode.Forbidden to "requests from pages of origin '$origin' may not change kTCS " +
+            "(web.allowedOrigins lists the origins that may)"
+    }
+    val programmatic = type != null || call.request.headers[CLIENT_HEADER] != null || call.request.headers[HEADER] != null
+    val fromBrowser = origin != null || call.request.headers["Sec-Fetch-Site"] != null
+    if (fromBrowser && !programmatic) {
+        return HttpStatusCode.Forbidden to "a browser request that changes kTCS needs Content-Type: application/json " +
+            "or the $CLIENT_HEADER header"
+    }
+    return null
+}
