@@ -45,11 +45,16 @@ class LauncherTest : FunSpec({
         }
     }
 
-    test("DELETE /v1/kernel from this machine shuts kTCS down with exit code 0") {
-        KtcsProcess(*local).use { ktcs ->
+    test("DELETE /v1/kernel from this machine with the access key shuts kTCS down with exit code 0") {
+        KtcsProcess(*local, "--set", "web.accessKey=stop-it").use { ktcs ->
             val base = Regex("web API (http://\\S+)/v1").find(ktcs.awaitLine("kTCS ready"))!!.groupValues[1]
-            val request = HttpRequest.newBuilder(URI("$base/v1/kernel")).DELETE().build()
-            HttpClient.newHttpClient().send(request, HttpResponse.BodyHandlers.ofString()).statusCode() shouldBe 200
+            fun delete(key: String?) = HttpClient.newHttpClient().send(
+                HttpRequest.newBuilder(URI("$base/v1/kernel")).DELETE()
+                    .apply { key?.let { header("X-Api-Access-Key", it) } }.build(),
+                HttpResponse.BodyHandlers.ofString(),
+            ).statusCode()
+            delete(null) shouldBe 403
+            delete("stop-it") shouldBe 200
             ktcs.awaitExit() shouldBe 0
         }
     }

@@ -3,6 +3,7 @@ package org.ktcs.kernel.web
 import io.ktor.http.HttpStatusCode
 import io.ktor.serialization.kotlinx.json.json
 import io.ktor.server.application.Application
+import io.ktor.server.application.ApplicationStopPreparing
 import io.ktor.server.application.install
 import io.ktor.server.cio.CIO
 import io.ktor.server.engine.EmbeddedServer
@@ -24,6 +25,7 @@ import org.ktcs.kernel.web.docs.docsRoutes
 import org.ktcs.kernel.web.docs.openApiRoutes
 import org.ktcs.kernel.web.plugins.AccessKey
 import org.ktcs.kernel.web.plugins.Cors
+import org.ktcs.kernel.web.plugins.CrossSiteGuard
 import org.ktcs.kernel.web.plugins.RequestSizeLimit
 import org.ktcs.kernel.web.plugins.installErrorResponses
 import org.ktcs.kernel.web.v1.V1Json
@@ -33,16 +35,21 @@ import org.ktcs.kernel.web.v1.orders.orderSequenceRoutes
 import org.ktcs.kernel.web.v1.orders.transportOrderRoutes
 import org.ktcs.kernel.web.v1.plantmodel.plantModelRoutes
 import org.ktcs.kernel.web.v1.vehicles.vehicleRoutes
+import org.ktcs.kernel.web.ws.LiveWebSockets
 import org.ktcs.kernel.web.ws.webSocketRoutes
 import org.slf4j.LoggerFactory
 
 /** What the web API's plugins are set to (from the `web.*` settings). */
 data class WebOptions(
     val accessKey: String = "",
-    val allowedOrigins: String = "*",
+    val allowedOrigins: String = "",
     val maxRequestBodyBytes: Long = 200L * 1024 * 1024,
     val webSocketBufferSize: Int = 1000,
+    val allowLocalShutdown: Boolean = false,
 )
+
+/** WebSocket clients only send small control messages; a larger frame closes the connection with 1009. */
+const val MAX_WEBSOCKET_FRAME_BYTES = 64L * 1024
 
 /** Asks the application to shut down, as `DELETE /v1/kernel` does. */
 fun interface ShutdownRequest {
@@ -67,6 +74,7 @@ class WebServer(
             allowedOrigins = config[KtcsSettings.webAllowedOrigins],
             maxRequestBodyBytes = config[KtcsSettings.webMaxRequestBodySize] * 1024 * 1024,
             webSocketBufferSize = config[KtcsSettings.webSocketBufferSize],
+            allowLocalShutdown = config[KtcsSettings.webAllowLocalShutdown],
         )
         val started = embeddedServer(CIO, port = config[KtcsSettings.webPort], host = host) {
             webModule(version, services, options, shutdown, contributions)
@@ -95,23 +103,26 @@ fun Application.webModule(
     installErrorResponses()
     install(Cors) { allowedOrigins = options.allowedOrigins }
     install(RequestSizeLimit) { maxBytes = options.maxRequestBodyBytes }
-    install(WebSockets)
+    install(WebSockets) { maxFrameSize = MAX_WEBSOCKET_FRAME_BYTES }
     val statusEvents = StatusEventBuffer()
     launch { feed(statusEvents, services) }
+    val webSockets = LiveWebSockets()
+    monitor.subscribe(ApplicationStopPreparing) { webSockets.closeAll() }
     val document = ApiDocument.current
     routing {
         contributions.forEach { it.install(this) }
         docsRoutes(document)
         route("/v1") {
             install(AccessKey) { key = options.accessKey }
+            install(CrossSiteGuard) { allowedOrigins = options.allowedOrigins }
             openApiRoutes(document)
-            kernelRoutes(version, shutdown)
+            kernelRoutes(version, shutdown, options)
             transportOrderRoutes(services)
             orderSequenceRoutes(services)
             vehicleRoutes(services)
             plantModelRoutes(services)
             eventRoutes(services, statusEvents)
-            webSocketRoutes(services, options.webSocketBufferSize)
+            webSocketRoutes(services, options.webSocketBufferSize, webSockets)
             post("/dispatcher/trigger") {
                 services.dispatcher.dispatch()
                 call.respond(HttpStatusCode.OK)

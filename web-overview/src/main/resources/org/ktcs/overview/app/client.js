@@ -30,7 +30,9 @@ export class KtcsClient {
 
   /** Calls REST v1; resolves with the parsed JSON (or null), rejects with an ApiError naming the problem. */
   async api(method, path, body) {
-    const headers = {};
+    // The custom header marks the request as a program's, not a form's: kTCS refuses browser requests that change
+    // something without it (or a JSON body), so that no other web page can.
+    const headers = { 'X-Requested-With': 'kTCS overview' };
     if (body !== undefined) headers['Content-Type'] = 'application/json';
     if (this.accessKey) headers['X-Api-Access-Key'] = this.accessKey;
     let response;

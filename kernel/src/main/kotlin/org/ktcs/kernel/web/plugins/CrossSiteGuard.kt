@@ -15,13 +15,21 @@ const val CLIENT_HEADER = "X-Requested-With"
  * Keeps web pages from changing kTCS (cross-site request forgery): a page may send a "simple" request (a form, or
  * `fetch` with a `text/plain` body) anywhere without asking, so every request that changes something must have a
  * JSON body or a header such a request cannot carry ([CLIENT_HEADER] or the access key). A request a browser sends
- * (it has an `Origin`) must also come from kTCS's own pages or an allowed origin.
+ * (it has an `Origin`) must also come from kTCS's own pages or an allowed origin; so must a WebSocket upgrade, which
+ * browsers send from any page without asking.
  *
  * Programs (curl, openTCS clients) send no `Origin` and are unaffected unless they send a body that is not JSON.
  */
 val CrossSiteGuard = createRouteScopedPlugin("CrossSiteGuard", ::CrossSiteGuardConfig) {
     val origins = BrowserOrigins(pluginConfig.allowedOrigins)
     onCall { call ->
+        if (call.request.headers[HttpHeaders.Upgrade].equals("websocket", ignoreCase = true)) {
+            val origin = call.request.headers[HttpHeaders.Origin] ?: return@onCall
+            if (!origins.allows(origin, call)) {
+                call.respondErrors(HttpStatusCode.Forbidden, "WebSocket connections from pages of origin '$origin' are refused")
+            }
+            return@onCall
+        }
         if (call.request.local.method !in CHANGING) return@onCall
         refusal(call, origins)?.let { (status, message) -> call.respondErrors(status, message) }
     }

@@ -5,7 +5,10 @@ import io.ktor.http.HttpStatusCode
 import io.ktor.server.application.Application
 import io.ktor.server.application.ApplicationCall
 import io.ktor.server.application.install
+import io.ktor.http.cio.ParserException
+import io.ktor.http.content.OutgoingContent
 import io.ktor.server.plugins.BadRequestException
+import io.ktor.server.plugins.PayloadTooLargeException
 import io.ktor.server.plugins.statuspages.StatusPages
 import io.ktor.server.response.respondText
 import kotlinx.serialization.builtins.ListSerializer
@@ -16,11 +19,16 @@ import org.ktcs.api.error.InvalidRequestException
 import org.ktcs.api.error.ObjectExistsException
 import org.ktcs.api.error.ObjectUnknownException
 import org.slf4j.LoggerFactory
+import java.io.IOException
+import kotlin.coroutines.cancellation.CancellationException
 
 /**
  * Maps errors to HTTP as openTCS's web API does, in one place: 400 for bad input, 404 for unknown objects, 409 for
- * existing names and illegal state changes, each with a JSON array of readable messages. Anything else is a bug:
- * logged with its stack trace, answered 500 without details.
+ * existing names and illegal state changes, 413 for bodies over the limit, each with a JSON array of readable messages.
+ * A request the server cannot read (a malformed chunked body, a client that hangs up) is the client's fault: 400, and
+ * a DEBUG line, so that no client can fill the log. Any other error status without a JSON body (405 from routing,
+ * say) gets a JSON array naming it, so every error has openTCS's shape. Anything else is a bug: logged with its
+ * stack trace, answered 500 without details.
  */
 fun Application.installErrorResponses() {
     val log = LoggerFactory.getLogger("org.ktcs.kernel.web")
@@ -28,7 +36,10 @@ fun Application.installErrorResponses() {
         exception<InvalidRequestException> { call, error ->
             call.respondErrors(HttpStatusCode.BadRequest, error.message)
         }
+        exception<PayloadTooLargeException> { call, error -> call.respondTooLarge(error) }
         exception<BadRequestException> { call, error ->
+            val tooLarge = error.causes().filterIsInstance<PayloadTooLargeException>().firstOrNull()
+            if (tooLarge != null) return@exception call.respondTooLarge(tooLarge)
             call.respondErrors(HttpStatusCode.BadRequest, error.rootMessage())
         }
         exception<ObjectUnknownException> { call, error -> call.respondErrors(HttpStatusCode.NotFound, error.message) }
@@ -36,18 +47,39 @@ fun Application.installErrorResponses() {
         exception<IllegalStateChangeException> { call, error ->
             call.respondErrors(HttpStatusCode.Conflict, error.message)
         }
+        exception<CancellationException> { call, error ->
+            // A stream (SSE, long polling) ended because the server stops or the client left: nothing went wrong.
+            log.debug("request {} {} ended: {}", call.request.local.method.value, call.request.local.uri, error.toString())
+        }
         exception<Throwable> { call, error ->
+            if (error.causes().any { it is IOException || it is ParserException }) {
+                log.debug("request {} {} could not be read: {}", call.request.local.method.value, call.request.local.uri, error.toString())
+                return@exception call.respondErrors(HttpStatusCode.BadRequest, "the request could not be read: ${error.rootMessage()}")
+            }
             log.error("request {} {} failed", call.request.local.method.value, call.request.local.uri, error)
             call.respondErrors(HttpStatusCode.InternalServerError, "internal error; the kTCS log has the details")
         }
-        status(HttpStatusCode.NotFound) { call, _ ->
-            call.respondErrors(
-                HttpStatusCode.NotFound,
-                "no such resource: ${call.request.local.method.value} ${call.request.local.uri}",
-            )
+        HttpStatusCode.allStatusCodes.filter { it.value >= 400 }.forEach { code ->
+            statuses[code] = { call, content, _ -> if (!content.isJson()) call.respondErrors(code, describe(call, code)) }
         }
     }
 }
+
+private fun describe(call: ApplicationCall, code: HttpStatusCode): String {
+    val request = "${call.request.local.method.value} ${call.request.local.uri}"
+    return when (code) {
+        HttpStatusCode.NotFound -> "no such resource: $request"
+        HttpStatusCode.MethodNotAllowed -> "method not allowed: $request"
+        else -> "${code.description}: $request"
+    }
+}
+
+private fun OutgoingContent.isJson(): Boolean = contentType?.match(ContentType.Application.Json) == true
+
+private suspend fun ApplicationCall.respondTooLarge(error: PayloadTooLargeException) =
+    respondErrors(HttpStatusCode.PayloadTooLarge, error.message ?: "request body too large")
+
+private fun Throwable.causes(): Sequence<Throwable> = generateSequence(this) { it.cause }
 
 /** Answers [status] with openTCS's error body: a JSON array of messages. */
 suspend fun ApplicationCall.respondErrors(status: HttpStatusCode, vararg messages: String?) {

@@ -4,7 +4,10 @@ import io.ktor.server.routing.Route
 import io.ktor.server.websocket.webSocket
 import org.ktcs.api.service.KernelServices
 
-/** `/v1/ws`: kTCS's live WebSocket (see the README for the protocol). */
-fun Route.webSocketRoutes(services: KernelServices, bufferSize: Int) {
-    webSocket("/ws") { WsSession(this, services, bufferSize).run() }
+/**
+ * `/v1/ws`: kTCS's live WebSocket (see the README for the protocol). Upgrades from pages of other origins are
+ * refused by [org.ktcs.kernel.web.plugins.CrossSiteGuard]; [live] lets a shutdown say goodbye to every client.
+ */
+fun Route.webSocketRoutes(services: KernelServices, bufferSize: Int, live: LiveWebSockets = LiveWebSockets()) {
+    webSocket("/ws") { live.track(this) { WsSession(this, services, bufferSize).run() } }
 }

@@ -1,7 +1,10 @@
 package org.ktcs.kernel.web.ws
 
 import io.ktor.server.websocket.DefaultWebSocketServerSession
+import io.ktor.websocket.CloseReason
 import io.ktor.websocket.Frame
+import io.ktor.websocket.FrameTooBigException
+import io.ktor.websocket.close
 import io.ktor.websocket.readText
 import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.Job
@@ -32,12 +35,18 @@ class WsSession(
 
     suspend fun run() = coroutineScope {
         var feed: Job? = null
-        for (frame in socket.incoming) {
-            if (frame !is Frame.Text) continue
-            val requested = parseSubscription(frame.readText()) ?: continue
-            feed?.cancelAndJoin()
-            topics = requested
-            feed = launch { streamForever() }
+        try {
+            for (frame in socket.incoming) {
+                if (frame !is Frame.Text) continue
+                val requested = parseSubscription(frame.readText()) ?: continue
+                feed?.cancelAndJoin()
+                topics = requested
+                feed = launch { streamForever() }
+            }
+        } catch (error: FrameTooBigException) {
+            // The client's fault, not kTCS's: answered with 1009, not logged as a failure.
+            feed?.cancel()
+            socket.close(CloseReason(CloseReason.Codes.TOO_BIG, "a frame of ${error.frameSize} bytes is too big"))
         }
         feed?.cancel()
     }
@@ -55,9 +64,12 @@ class WsSession(
         ) {
             return null.also { send(WsError("unknown message type '${message.type}'; expected 'subscribe'")) }
         }
+        if (message.topics.isEmpty()) {
+            return null.also { send(WsError("subscribe needs topics, one or more of $KNOWN_TOPICS")) }
+        }
         val unknown = message.topics.filter { WsTopic.of(it) == null }
         if (unknown.isNotEmpty()) {
-            return null.also { send(WsError("unknown topics $unknown; known: ${WsTopic.entries.map { it.wireName }}")) }
+            return null.also { send(WsError("unknown topics $unknown; known: $KNOWN_TOPICS")) }
         }
         return message.topics.mapNotNullTo(LinkedHashSet(), WsTopic::of)
     }
@@ -109,3 +121,5 @@ class WsSession(
         socket.flush()
     }
 }
+
+private val KNOWN_TOPICS = WsTopic.entries.map { it.wireName }
