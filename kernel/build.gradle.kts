@@ -17,6 +17,7 @@ dependencies {
     api(libs.koin.logger.slf4j)
     api(libs.ktor.server.core)
     api(libs.ktor.server.cio)
+    api(libs.ktor.server.netty)
     api(libs.ktor.server.content.negotiation)
     api(libs.ktor.serialization.kotlinx.json)
     api(libs.ktor.server.status.pages)

@@ -43,6 +43,37 @@ object KtcsSettings {
         false,
         "Let DELETE /v1/kernel shut kTCS down from this machine without the access key (it always needs one of the two).",
     )
+    val webTlsKeyStore = Setting(
+        "web.tls.keyStore",
+        "",
+        "PKCS12 or JKS key store with the certificate and key for HTTPS (empty: see web.tls.certificate; neither: plain " +
+            "HTTP).",
+        { it },
+    )
+    val webTlsKeyStorePassword = Setting(
+        "web.tls.keyStorePassword",
+        "",
+        "Password of web.tls.keyStore and of the key in it.",
+        { it },
+    )
+    val webTlsKeyAlias = Setting(
+        "web.tls.keyAlias",
+        "",
+        "Alias of the key in web.tls.keyStore (empty: the first key in it).",
+        { it },
+    )
+    val webTlsCertificate = Setting(
+        "web.tls.certificate",
+        "",
+        "PEM file with the HTTPS certificate (chain), used with web.tls.privateKey instead of a key store.",
+        { it },
+    )
+    val webTlsPrivateKey = Setting(
+        "web.tls.privateKey",
+        "",
+        "PEM file with the unencrypted PKCS#8 private key (BEGIN PRIVATE KEY) of web.tls.certificate.",
+        { it },
+    )
     val webMaxRequestBodySize = longSetting(
         "web.maxRequestBodySize",
         200,
@@ -289,6 +320,11 @@ object KtcsSettings {
         webAccessKey,
         webAllowedOrigins,
         webAllowLocalShutdown,
+        webTlsKeyStore,
+        webTlsKeyStorePassword,
+        webTlsKeyAlias,
+        webTlsCertificate,
+        webTlsPrivateKey,
         webMaxRequestBodySize,
         webSocketBufferSize,
         xmlOrdersPort,

@@ -8,6 +8,8 @@ import io.ktor.server.application.install
 import io.ktor.server.cio.CIO
 import io.ktor.server.engine.EmbeddedServer
 import io.ktor.server.engine.embeddedServer
+import io.ktor.server.engine.sslConnector
+import io.ktor.server.netty.Netty
 import io.ktor.server.plugins.contentnegotiation.ContentNegotiation
 import io.ktor.server.response.respond
 import io.ktor.server.routing.post
@@ -56,7 +58,7 @@ fun interface ShutdownRequest {
     fun request()
 }
 
-/** The HTTP server of the kernel application (Ktor, CIO engine). */
+/** The HTTP(S) server of the kernel application (Ktor: CIO for HTTP, Netty for HTTPS). */
 class WebServer(
     private val config: KtcsConfig,
     private val version: KernelVersion,
@@ -66,9 +68,13 @@ class WebServer(
 ) {
     private var server: EmbeddedServer<*, *>? = null
 
-    /** Starts listening and returns the base URL it serves, with the port actually bound. */
+    /**
+     * Starts listening and returns the base URL it serves, with the port actually bound: plain HTTP on the CIO
+     * engine, or HTTPS on Netty when `web.tls.*` is set (CIO cannot serve TLS; Netty is loaded only then).
+     */
     fun start(): String {
         val host = config[KtcsSettings.webBindAddress]
+        val port = config[KtcsSettings.webPort]
         val options = WebOptions(
             accessKey = config[KtcsSettings.webAccessKey],
             allowedOrigins = config[KtcsSettings.webAllowedOrigins],
@@ -76,13 +82,21 @@ class WebServer(
             webSocketBufferSize = config[KtcsSettings.webSocketBufferSize],
             allowLocalShutdown = config[KtcsSettings.webAllowLocalShutdown],
         )
-        val started = embeddedServer(CIO, port = config[KtcsSettings.webPort], host = host) {
-            webModule(version, services, options, shutdown, contributions)
-        }
-            .start(wait = false)
+        val module: Application.() -> Unit = { webModule(version, services, options, shutdown, contributions) }
+        val tls = WebTls.from(config)
+        val started = if (tls == null) {
+            embeddedServer(CIO, port = port, host = host, module = module)
+        } else {
+            embeddedServer(Netty, configure = {
+                sslConnector(tls.keyStore, tls.alias, { tls.password }, { tls.password }) {
+                    this.host = host
+                    this.port = port
+                }
+            }, module = module)
+        }.start(wait = false)
         server = started
-        val port = runBlocking { started.engine.resolvedConnectors().first().port }
-        return "http://$host:$port"
+        val bound = runBlocking { started.engine.resolvedConnectors().first().port }
+        return "${if (tls == null) "http" else "https"}://$host:$bound"
     }
 
     fun stop() {
