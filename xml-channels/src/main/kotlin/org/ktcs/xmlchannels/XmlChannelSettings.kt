@@ -35,8 +35,12 @@ data class XmlChannelSettings(
         require(inputLimit > 0) { "input limit must be positive, not $inputLimit" }
         require(statusSeparator.isNotEmpty()) { "the status separator must not be empty" }
         require(statusBufferSize > 0) { "status buffer size must be positive, not $statusBufferSize" }
-        require(ordersMaxConnections > 0) { "order channel connection limit must be positive, not $ordersMaxConnections" }
-        require(statusMaxConnections > 0) { "status channel connection limit must be positive, not $statusMaxConnections" }
+        require(ordersMaxConnections > 0) {
+            "order channel connection limit must be positive, not $ordersMaxConnections"
+        }
+        require(statusMaxConnections > 0) {
+            "status channel connection limit must be positive, not $statusMaxConnections"
+        }
     }
 
     companion object {

@@ -54,9 +54,11 @@ class XmlChannels(
         try {
             ScriptFiles(settings.scriptsDirectory).writeTemplate()
             val orderChannel = OrderChannelServer(services.transportOrders, settings)
-            ordersPort = listen("XML order channel", settings.ordersPort, settings.ordersMaxConnections, orderChannel::serve)
+            ordersPort =
+                listen("XML order channel", settings.ordersPort, settings.ordersMaxConnections, orderChannel::serve)
             scope.launch { statusChannel.broadcast(services.events()) }
-            statusPort = listen("XML status channel", settings.statusPort, settings.statusMaxConnections, statusChannel::serve)
+            statusPort =
+                listen("XML status channel", settings.statusPort, settings.statusMaxConnections, statusChannel::serve)
         } catch (error: Exception) {
             close()
             throw error

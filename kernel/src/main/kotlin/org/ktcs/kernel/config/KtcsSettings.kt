@@ -46,8 +46,8 @@ object KtcsSettings {
     val webTlsKeyStore = Setting(
         "web.tls.keyStore",
         "",
-        "PKCS12 or JKS key store with the certificate and key for HTTPS (empty: see web.tls.certificate; neither: plain " +
-            "HTTP).",
+        "PKCS12 or JKS key store with the certificate and key for HTTPS (empty: see web.tls.certificate; " +
+            "neither: plain HTTP).",
         { it },
     )
     val webTlsKeyStorePassword = Setting(

@@ -29,8 +29,8 @@ import org.ktcs.kernel.events.Notifications
 import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.model.PlantModelValidator
 import org.ktcs.kernel.orders.OrderLifecycle
-import org.ktcs.kernel.orders.XmlSafeText
 import org.ktcs.kernel.orders.TransportOrderFactory
+import org.ktcs.kernel.orders.XmlSafeText
 import org.ktcs.kernel.vehicles.VehicleControllers
 import org.ktcs.kernel.vehicles.VehicleEnvironment
 import org.ktcs.kernel.workingset.HistoryCodes

@@ -7,7 +7,9 @@ import org.ktcs.kernel.orders.XmlSafeText
 internal fun nameProblems(index: ModelIndex): List<ModelProblem> {
     val objects = index.model.allObjects().toList()
     return objects.filter { it.name.isBlank() }.map { it.error("name must not be blank") } +
-        objects.mapNotNull { o -> XmlSafeText.firstUnsafe(o.name)?.let { o.error("name has a character XML cannot carry: $it") } } +
+        objects.mapNotNull { o ->
+            XmlSafeText.firstUnsafe(o.name)?.let { o.error("name has a character XML cannot carry: $it") }
+        } +
         duplicateNameProblems(objects.filter { it.name.isNotBlank() })
 }
 

@@ -38,9 +38,14 @@ object XmlSafeText {
 
     private fun isAllowed(code: Int): Boolean = when {
         code == 0x9 || code == 0xA || code == 0xD -> true
+
         code < 0x20 -> false
-        code in 0xD800..0xDFFF -> false // a lone surrogate; a pair arrives here as one supplementary code point
+
+        code in 0xD800..0xDFFF -> false
+
+        // a lone surrogate; a pair arrives here as one supplementary code point
         code == 0xFFFE || code == 0xFFFF -> false
+
         else -> true
     }
 }

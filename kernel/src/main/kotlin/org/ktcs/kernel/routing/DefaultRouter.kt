@@ -32,10 +32,17 @@ class DefaultRouter(private val configuration: RouterConfiguration = RouterConfi
     override fun isGenerallyRoutable(order: TransportOrder): Boolean {
         val legs = legCandidates(order, includeLockedLocations = true)
         if (!isRoutableInPrinciple(graphs.general, legs)) return false
-        val avoided = AvoidedResources.of(graphs.model, parseResourceNames(order.properties[RESOURCES_TO_AVOID_PROPERTY]), "")
+        val avoided = AvoidedResources.of(
+            graphs.model,
+            parseResourceNames(order.properties[RESOURCES_TO_AVOID_PROPERTY]),
+            "",
+        )
         val usableLegs = legs.map { points -> points.filter { it !in avoided.points } }
         val vehicles = order.intendedVehicle?.let { listOfNotNull(graphs.model.vehicle(it)) } ?: graphs.model.vehicles
-        if (vehicles.isEmpty()) return avoided.isEmpty() || isRoutableInPrinciple(graphs.general.without(avoided), usableLegs)
+        if (vehicles.isEmpty()) {
+            return avoided.isEmpty() ||
+                isRoutableInPrinciple(graphs.general.without(avoided), usableLegs)
+        }
         return vehicles.map(configuration::graphKeyOf).distinct().any { key ->
             isRoutableInPrinciple(graphs.generalFor(key).without(avoided), usableLegs)
         }

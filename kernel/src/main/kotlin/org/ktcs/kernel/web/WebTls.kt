@@ -29,8 +29,11 @@ class WebTls(val keyStore: KeyStore, val alias: String, val password: CharArray)
                 store.isNotEmpty() && (certificate.isNotEmpty() || key.isNotEmpty()) -> throw InvalidTlsSettings(
                     "web.tls.keyStore and web.tls.certificate/web.tls.privateKey exclude each other; set one of them",
                 )
+
                 store.isNotEmpty() -> fromKeyStore(Path.of(store), password, config[KtcsSettings.webTlsKeyAlias])
+
                 certificate.isNotEmpty() || key.isNotEmpty() -> fromPem(certificate, key)
+
                 else -> null
             }
         }

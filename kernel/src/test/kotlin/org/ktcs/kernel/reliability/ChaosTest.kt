@@ -25,7 +25,7 @@ class ChaosTest : FunSpec({
         demoKernel().use { kernel ->
             val run = ChaosRun(kernel, Random(SEED))
             run.start()
-            kernel.context.runUntil { run.created >= ORDERS && run.openOrders() == 0 || run.stuck() }
+            kernel.context.runUntil { (run.created >= ORDERS && run.openOrders() == 0) || run.stuck() }
             println("chaos (seed $SEED): ${run.summary()}")
             run.violations.take(10).forEach { println("chaos violation: $it") }
             run.unfinished().take(10).forEach { println("chaos unfinished: $it") }
@@ -79,7 +79,10 @@ private class ChaosRun(private val kernel: SimulationKernel, private val random:
         .filter { it.name.startsWith(PREFIX) && it.name !in withdrawn && it.state != TransportOrderState.FINISHED }
         .map { "${it.name} ${it.state} vehicle=${it.processingVehicle}" }
 
-    fun summary(): String = "orders created $created, finished ${kernel.core.orders.all().count { it.name.startsWith(PREFIX) && it.state == TransportOrderState.FINISHED }}, " +
+    private fun finished(): Int =
+        kernel.core.orders.all().count { it.name.startsWith(PREFIX) && it.state == TransportOrderState.FINISHED }
+
+    fun summary(): String = "orders created $created, finished ${finished()}, " +
         "withdrawn ${withdrawn.size}, actions $actions (refused $refused), vehicle events checked $eventsChecked, " +
         "violations ${violations.size}, simulated ${kernel.context.elapsedMillis() / 1000} s"
 
@@ -89,10 +92,13 @@ private class ChaosRun(private val kernel: SimulationKernel, private val random:
         val all = kernel.core.plant.vehicles()
         val holders = all.flatMap { v -> v.allocatedResources.flatten().toSet().map { it to v.name } }
             .groupBy({ it.first }, { it.second }).filterValues { it.size > 1 }
-        val shared = all.filter { it.integrationLevel >= IntegrationLevel.TO_BE_RESPECTED && it.currentPosition != null }
+        val shared = all.filter {
+            it.integrationLevel >= IntegrationLevel.TO_BE_RESPECTED && it.currentPosition != null
+        }
             .groupBy({ it.currentPosition!! }, { it.name }).filterValues { it.size > 1 }
         if (holders.isNotEmpty() || shared.isNotEmpty()) {
-            violations += "t=${kernel.context.elapsedMillis()} after ${event.current?.name}: held twice $holders, shared $shared"
+            violations +=
+                "t=${kernel.context.elapsedMillis()} after ${event.current?.name}: held twice $holders, shared $shared"
         }
     }
 
@@ -101,7 +107,14 @@ private class ChaosRun(private val kernel: SimulationKernel, private val random:
         val source = sources.random(random)
         val target = targets.filter { it != source }.random(random)
         val name = "$PREFIX%03d".format(created++)
-        service { transportOrders.createTransportOrder(TransportOrderCreation(name, listOf(Destination(source, "Load cargo"), Destination(target, "Unload cargo")))) }
+        service {
+            transportOrders.createTransportOrder(
+                TransportOrderCreation(
+                    name,
+                    listOf(Destination(source, "Load cargo"), Destination(target, "Unload cargo")),
+                ),
+            )
+        }
     }
 
     private fun scheduleAction() {
@@ -118,14 +131,20 @@ private class ChaosRun(private val kernel: SimulationKernel, private val random:
         val vehicle = vehicles.random(random)
         when (random.nextInt(20)) {
             0 -> record("withdraw order regularly") { withdrawOrder(immediate = false) }
+
             1 -> record("withdraw order immediately") { withdrawOrder(immediate = true) }
+
             2 -> record("withdraw by vehicle") {
                 kernel.core.plant.vehicle(vehicle).transportOrder?.let { withdrawn += it }
                 dispatcher.withdrawByVehicle(vehicle, immediate = random.nextBoolean())
             }
+
             in 3..5 -> record("lock path") { plantModel.setPathLocked(paths.random(random), true) }
+
             in 6..8 -> record("unlock path") { plantModel.setPathLocked(paths.random(random), false) }
+
             in 9..12 -> record("pause") { vehicles.setPaused(vehicle, random.nextBoolean()) }
+
             else -> record("integration level") {
                 // Half the time back to work, so that the fleet keeps moving between the disruptions.
                 val level = when (random.nextInt(10)) {

@@ -9,20 +9,62 @@ class RestCaseGenerator(seed: Long) {
 
     fun next(): RestCase = when (random.nextInt(100)) {
         in 0..29 -> RestCase("POST", "/transportOrders/${name()}", orderBody(), contentType())
+
         in 30..37 -> RestCase("POST", "/orderSequences/${name()}", sequenceBody(), contentType())
+
         in 38..43 -> RestCase("POST", "/transportOrders/${name()}/withdrawal${query("immediate", bool())}", null, null)
-        in 44..47 -> RestCase("PUT", "/transportOrders/${name()}/intendedVehicle${query("vehicle", vehicle())}", null, null)
+
+        in 44..47 -> RestCase(
+            "PUT",
+            "/transportOrders/${name()}/intendedVehicle${query("vehicle", vehicle())}",
+            null,
+            null,
+        )
+
         in 48..50 -> RestCase("PUT", "/orderSequences/${name()}/complete", null, null)
+
         in 51..58 -> RestCase("PUT", "/vehicles/${vehicle()}/${vehicleSetting()}", maybeJunk(), contentType())
-        in 59..62 -> RestCase("POST", "/vehicles/${vehicle()}/${pick("withdrawal", "rerouteRequest", "message")}${query("immediate", bool())}", maybeJunk(), contentType())
+
+        in 59..62 -> RestCase(
+            "POST",
+            "/vehicles/${vehicle()}/${pick("withdrawal", "rerouteRequest", "message")}${query("immediate", bool())}",
+            maybeJunk(),
+            contentType(),
+        )
+
         in 63..66 -> RestCase("POST", "/vehicles/${vehicle()}/routeComputationQuery", json(), contentType())
-        in 67..70 -> RestCase("PUT", "/${pick("paths", "locations")}/${encode(pick(*RESOURCES))}/locked${query("newValue", bool())}", null, null)
+
+        in 67..70 -> RestCase(
+            "PUT",
+            "/${pick("paths", "locations")}/${encode(pick(*RESOURCES))}/locked${query("newValue", bool())}",
+            null,
+            null,
+        )
+
         in 71..74 -> RestCase("POST", "/plantModel/topologyUpdateRequest", json(), contentType())
+
         in 75..76 -> RestCase("PUT", "/plantModel", pick(json(), junk(), "{\"name\":1}"), contentType())
+
         in 77..82 -> RestCase("GET", get(), null, null)
-        in 83..86 -> RestCase(pick("PATCH", "DELETE", "PUT", "POST", "HEAD", "OPTIONS"), pick("/transportOrders", "/vehicles", "/kernel", "/kernel/version", "/nope", "/ws"), maybeJunk(), contentType(), origin())
-        in 87..90 -> RestCase("POST", "/transportOrders/${name()}", orderBody(), pick("text/plain", "application/x-www-form-urlencoded", "multipart/form-data"), origin())
+
+        in 83..86 -> RestCase(
+            pick("PATCH", "DELETE", "PUT", "POST", "HEAD", "OPTIONS"),
+            pick("/transportOrders", "/vehicles", "/kernel", "/kernel/version", "/nope", "/ws"),
+            maybeJunk(),
+            contentType(),
+            origin(),
+        )
+
+        in 87..90 -> RestCase(
+            "POST",
+            "/transportOrders/${name()}",
+            orderBody(),
+            pick("text/plain", "application/x-www-form-urlencoded", "multipart/form-data"),
+            origin(),
+        )
+
         in 91..94 -> RestCase("POST", "/dispatcher/trigger", null, null, origin())
+
         else -> RestCase("POST", "/transportOrders/${name()}", bigBody(), "application/json")
     }
 
@@ -39,7 +81,10 @@ class RestCaseGenerator(seed: Long) {
     )
 
     private fun vehicleSetting(): String = pick(
-        "integrationLevel${query("newValue", pick("TO_BE_IGNORED", "TO_BE_NOTICED", "TO_BE_RESPECTED", "TO_BE_UTILIZED", text()))}",
+        "integrationLevel${query(
+            "newValue",
+            pick("TO_BE_IGNORED", "TO_BE_NOTICED", "TO_BE_RESPECTED", "TO_BE_UTILIZED", text()),
+        )}",
         "paused${query("newValue", bool())}",
         "allowedOrderTypes",
         "acceptableOrderTypes",
@@ -51,15 +96,22 @@ class RestCaseGenerator(seed: Long) {
 
     private fun orderBody(): String = when (random.nextInt(6)) {
         0 -> junk()
+
         1 -> json()
+
         2 -> validOrder()
+
         else -> buildString {
             append("{")
             val fields = mutableListOf<String>()
             if (random.nextInt(8) != 0) fields += "\"destinations\":${destinations()}"
             if (random.nextBoolean()) fields += "\"properties\":${properties()}"
             if (random.nextInt(4) == 0) fields += "\"intendedVehicle\":${value(vehicleName())}"
-            if (random.nextInt(4) == 0) fields += "\"deadline\":${value(pick("2030-01-01T00:00:00Z", "yesterday", "-1", text()))}"
+            if (random.nextInt(4) ==
+                0
+            ) {
+                fields += "\"deadline\":${value(pick("2030-01-01T00:00:00Z", "yesterday", "-1", text()))}"
+            }
             if (random.nextInt(4) == 0) fields += "\"dependencies\":[${value(text())}]"
             if (random.nextInt(4) == 0) fields += "\"wrappingSequence\":${value(text())}"
             if (random.nextInt(4) == 0) fields += "\"type\":${value(text())}"
@@ -72,8 +124,18 @@ class RestCaseGenerator(seed: Long) {
 
     /** An order the kernel accepts, maybe with a property or intended vehicle, so that creation is exercised too. */
     private fun validOrder(): String {
-        val (location, operation) = pick("Storage 01" to "Load cargo", "Goods out 01" to "Unload cargo", "Point-0001" to "MOVE")
-        val extra = pick("", ",\"properties\":[{\"key\":\"k\",\"value\":\"v\"}]", ",\"intendedVehicle\":\"Vehicle-02\"", ",\"incompleteName\":true")
+        val (location, operation) = pick(
+            "Storage 01" to "Load cargo",
+            "Goods out 01" to "Unload cargo",
+            "Point-0001" to "MOVE",
+        )
+        val extra =
+            pick(
+                "",
+                ",\"properties\":[{\"key\":\"k\",\"value\":\"v\"}]",
+                ",\"intendedVehicle\":\"Vehicle-02\"",
+                ",\"incompleteName\":true",
+            )
         return "{\"destinations\":[{\"locationName\":\"$location\",\"operation\":\"$operation\"}]$extra}"
     }
 
@@ -86,7 +148,9 @@ class RestCaseGenerator(seed: Long) {
     )
 
     private fun destinations(): String = "[" + List(random.nextInt(4)) {
-        "{\"locationName\":${value(pick(*LOCATIONS, *RESOURCES, text()))},\"operation\":${value(pick(*OPERATIONS, text()))}" +
+        "{\"locationName\":${value(
+            pick(*LOCATIONS, *RESOURCES, text()),
+        )},\"operation\":${value(pick(*OPERATIONS, text()))}" +
             (if (random.nextBoolean()) ",\"properties\":${properties()}" else "") + "}"
     }.joinToString(",") + "]"
 
@@ -95,28 +159,41 @@ class RestCaseGenerator(seed: Long) {
     }.joinToString(",") + "]"
 
     /** A JSON string literal of [text], with its hostile characters escaped as JSON allows. */
-    private fun value(text: String): String = if (random.nextInt(20) == 0) "null" else buildString {
-        append('"')
-        text.forEach { c ->
-            when {
-                c == '"' -> append("\\\"")
-                c == '\\' -> append("\\\\")
-                c < ' ' -> append("\\u%04x".format(c.code))
-                else -> append(c)
+    private fun value(text: String): String = if (random.nextInt(20) == 0) {
+        "null"
+    } else {
+        buildString {
+            append('"')
+            text.forEach { c ->
+                when {
+                    c == '"' -> append("\\\"")
+                    c == '\\' -> append("\\\\")
+                    c < ' ' -> append("\\u%04x".format(c.code))
+                    else -> append(c)
+                }
             }
+            append('"')
         }
-        append('"')
     }
 
     /** Any JSON value, up to a small depth. */
     private fun json(depth: Int = 0): String = when (if (depth > 3) random.nextInt(4) else random.nextInt(7)) {
         0 -> value(text())
+
         1 -> number()
+
         2 -> pick("true", "false", "null")
+
         3 -> "\"\""
+
         4 -> "[" + List(random.nextInt(4)) { json(depth + 1) }.joinToString(",") + "]"
-        else -> "{" + List(random.nextInt(4)) { "${value(pick("destinations", "paths", "name", "key", text()))}:${json(depth + 1)}" }
-            .joinToString(",") + "}"
+
+        else ->
+            "{" +
+                List(random.nextInt(4)) {
+                    "${value(pick("destinations", "paths", "name", "key", text()))}:${json(depth + 1)}"
+                }
+                    .joinToString(",") + "}"
     }
 
     private fun junk(): String = pick(
@@ -132,13 +209,26 @@ class RestCaseGenerator(seed: Long) {
 
     private fun maybeJunk(): String? = if (random.nextBoolean()) null else pick(json(), junk())
 
-    private fun bigBody(): String = "{\"destinations\":[],\"type\":\"" + "x".repeat(random.nextInt(1, 3) * 1024 * 1024) + "\"}"
+    private fun bigBody(): String =
+        "{\"destinations\":[],\"type\":\"" + "x".repeat(random.nextInt(1, 3) * 1024 * 1024) + "\"}"
 
-    private fun contentType(): String? = pick("application/json", "application/json", "application/json; charset=utf-8", null, "text/plain")
+    private fun contentType(): String? = pick(
+        "application/json",
+        "application/json",
+        "application/json; charset=utf-8",
+        null,
+        "text/plain",
+    )
 
-    private fun origin(): Map<String, String> = if (random.nextBoolean()) emptyMap() else mapOf("Origin" to pick("http://evil.example", "null"))
+    private fun origin(): Map<String, String> = if (random.nextBoolean()) {
+        emptyMap()
+    } else {
+        mapOf("Origin" to pick("http://evil.example", "null"))
+    }
 
-    private fun name(): String = encode(pick("Order-${random.nextInt(50)}", "T", text(), "a/b", ".", "..", "x".repeat(random.nextInt(1, 3000))))
+    private fun name(): String = encode(
+        pick("Order-${random.nextInt(50)}", "T", text(), "a/b", ".", "..", "x".repeat(random.nextInt(1, 3000))),
+    )
 
     private fun vehicle(): String = encode(vehicleName())
 

@@ -68,9 +68,14 @@ private class FuzzOutcome {
         byStatus.merge(status, 1, Int::plus)
         when {
             status >= 500 -> failures += "$case: $status ${response.body().take(200)}"
+
             // A HEAD answer never has a body; its status is all there is to check.
             case.method == "HEAD" -> handled++
-            status >= 400 && !isErrorArray(response) -> failures += "$case: $status not a JSON array: ${response.body().take(200)}"
+
+            status >= 400 && !isErrorArray(response) ->
+                failures +=
+                    "$case: $status not a JSON array: ${response.body().take(200)}"
+
             else -> {
                 handled++
                 if (status == 200) noteCreated(case, response)
@@ -98,9 +103,15 @@ private class FuzzOutcome {
     fun checkCreated(http: HttpClient, base: String) {
         val orders = names(http, "$base/transportOrders")
         val sequences = names(http, "$base/orderSequences")
-        if (orders != createdOrders) failures += "orders created without a 200: ${orders - createdOrders}, lost: ${createdOrders - orders}"
+        if (orders !=
+            createdOrders
+        ) {
+            failures +=
+                "orders created without a 200: ${orders - createdOrders}, lost: ${createdOrders - orders}"
+        }
         if (sequences != createdSequences) {
-            failures += "sequences created without a 200: ${sequences - createdSequences}, lost: ${createdSequences - sequences}"
+            failures +=
+                "sequences created without a 200: ${sequences - createdSequences}, lost: ${createdSequences - sequences}"
         }
     }
 
@@ -119,7 +130,7 @@ private fun checkStillServing(http: HttpClient, base: String) {
     val client = RecordingWebSocket()
     val socket = http.newWebSocketBuilder().buildAsync(URI(base.replace("http:", "ws:") + "/ws"), client).get()
     socket.sendText("""{"type":"subscribe","topics":["vehicles"]}""", true).get()
-    (client.messages.poll(10, TimeUnit.SECONDS) ?: "") .contains("\"snapshot\"") shouldBe true
+    (client.messages.poll(10, TimeUnit.SECONDS) ?: "").contains("\"snapshot\"") shouldBe true
     socket.abort()
 }
 

@@ -34,7 +34,9 @@ class TlsTest : FunSpec({
         "-keystore", keyStore.absolutePathString(), "-storetype", "PKCS12", "-storepass", "changeit",
     ).inheritIO().start().waitFor(60, TimeUnit.SECONDS) shouldBe true
 
-    val store = KeyStore.getInstance("PKCS12").apply { Files.newInputStream(keyStore).use { load(it, "changeit".toCharArray()) } }
+    val store = KeyStore.getInstance("PKCS12").apply {
+        Files.newInputStream(keyStore).use { load(it, "changeit".toCharArray()) }
+    }
     val trusting = HttpClient.newBuilder().sslContext(trusting(store)).build()
 
     suspend fun withHttps(vararg settings: String, block: suspend (String) -> Unit) {
@@ -50,20 +52,29 @@ class TlsTest : FunSpec({
 
     test("a key store serves the API and the WebSocket over HTTPS") {
         withHttps("web.tls.keyStore=$keyStore", "web.tls.keyStorePassword=changeit") { base ->
-            val version = trusting.send(HttpRequest.newBuilder(URI("$base/kernel/version")).build(), HttpResponse.BodyHandlers.ofString())
+            val version = trusting.send(
+                HttpRequest.newBuilder(URI("$base/kernel/version")).build(),
+                HttpResponse.BodyHandlers.ofString(),
+            )
             version.statusCode() shouldBe 200
             version.body() shouldContain "kTCS"
             version.sslSession().get().protocol shouldStartWith "TLSv1."
 
             val client = RecordingWebSocket()
-            val socket = trusting.newWebSocketBuilder().buildAsync(URI(base.replace("https:", "wss:") + "/ws"), client).get()
+            val socket = trusting.newWebSocketBuilder().buildAsync(
+                URI(base.replace("https:", "wss:") + "/ws"),
+                client,
+            ).get()
             socket.sendText("""{"type":"subscribe","topics":["vehicles"]}""", true).get()
             client.messages.poll(10, TimeUnit.SECONDS)!! shouldContain "\"snapshot\""
             socket.abort()
 
             // A client that does not trust the certificate is refused; plain HTTP gets no answer from the TLS port.
             shouldThrow<javax.net.ssl.SSLHandshakeException> {
-                HttpClient.newHttpClient().send(HttpRequest.newBuilder(URI("$base/kernel/version")).build(), HttpResponse.BodyHandlers.ofString())
+                HttpClient.newHttpClient().send(
+                    HttpRequest.newBuilder(URI("$base/kernel/version")).build(),
+                    HttpResponse.BodyHandlers.ofString(),
+                )
             }
         }
     }
@@ -80,9 +91,17 @@ class TlsTest : FunSpec({
     }
 
     test("a wrong password or a missing file is a one-line error naming the setting") {
-        val config = ConfigLoader().load(null, emptyMap(), listOf("web.tls.keyStore=$keyStore", "web.tls.keyStorePassword=wrong"))
+        val config = ConfigLoader().load(
+            null,
+            emptyMap(),
+            listOf("web.tls.keyStore=$keyStore", "web.tls.keyStorePassword=wrong"),
+        )
         shouldThrow<WebTls.InvalidTlsSettings> { WebTls.from(config) }.message shouldContain "web.tls.keyStore"
-        val missing = ConfigLoader().load(null, emptyMap(), listOf("web.tls.certificate=/nonexistent.pem", "web.tls.privateKey=/nonexistent.pem"))
+        val missing = ConfigLoader().load(
+            null,
+            emptyMap(),
+            listOf("web.tls.certificate=/nonexistent.pem", "web.tls.privateKey=/nonexistent.pem"),
+        )
         shouldThrow<WebTls.InvalidTlsSettings> { WebTls.from(missing) }.message shouldContain "web.tls.certificate"
     }
 })
@@ -97,4 +116,5 @@ private fun trusting(store: KeyStore): SSLContext {
 }
 
 private fun pem(type: String, der: ByteArray): String =
-    "-----BEGIN $type-----\n" + Base64.getMimeEncoder(64, "\n".toByteArray()).encodeToString(der) + "\n-----END $type-----\n"
+    "-----BEGIN $type-----\n" + Base64.getMimeEncoder(64, "\n".toByteArray()).encodeToString(der) +
+        "\n-----END $type-----\n"

@@ -73,9 +73,7 @@ class WebFaultsTest : FunSpec({
             fun post(chunks: String): String = Socket(InetAddress.getLoopbackAddress(), port).use { socket ->
                 socket.soTimeout = 10_000
                 socket.getOutputStream().write(
-                    ("POST /v1/transportOrders/Chunky HTTP/1.1\r\nHost: 127.0.0.1\r\n" +
-                        "Content-Type: application/json\r\nTransfer-Encoding: chunked\r\nConnection: close\r\n\r\n" +
-                        chunks).toByteArray(),
+                    (CHUNKED_POST + chunks).toByteArray(),
                 )
                 socket.getInputStream().readBytes().decodeToString()
             }
@@ -109,7 +107,10 @@ class WebFaultsTest : FunSpec({
         val (application, base) = startKernel()
         val client = RecordingWebSocket()
         http.newWebSocketBuilder().buildAsync(URI(base.replace("http:", "ws:") + "/ws"), client).get()
-        val sse = http.sendAsync(HttpRequest.newBuilder(URI("$base/sse?/events/vehicles=true")).build(), HttpResponse.BodyHandlers.ofLines())
+        val sse = http.sendAsync(
+            HttpRequest.newBuilder(URI("$base/sse?/events/vehicles=true")).build(),
+            HttpResponse.BodyHandlers.ofLines(),
+        )
         sse.get(10, TimeUnit.SECONDS)
         val errors = errorsLoggedWhile { application.stop() }
         client.closed.get(10, TimeUnit.SECONDS) shouldBe 1001
@@ -118,7 +119,11 @@ class WebFaultsTest : FunSpec({
 
     test("every error the API sends is a JSON array of messages") {
         withKernel { base ->
-            for ((method, path) in listOf("PATCH" to "/transportOrders/X", "PUT" to "/kernel/version", "GET" to "/nope")) {
+            for ((method, path) in listOf(
+                "PATCH" to "/transportOrders/X",
+                "PUT" to "/kernel/version",
+                "GET" to "/nope",
+            )) {
                 val response = send(http, method, "$base$path", null)
                 response.body() shouldStartWith "[\""
                 response.headers().firstValue("Content-Type").get() shouldStartWith "application/json"
@@ -135,9 +140,23 @@ class CrossSiteRequestsTest : FunSpec({
 
     test("a text/plain POST (a form or a simple fetch from any page) creates nothing") {
         withKernel { base ->
-            val response = send(http, "POST", "$base/transportOrders/Evil", order, headers = mapOf("Content-Type" to "text/plain", "Origin" to evil))
+            val response =
+                send(
+                    http,
+                    "POST",
+                    "$base/transportOrders/Evil",
+                    order,
+                    headers = mapOf("Content-Type" to "text/plain", "Origin" to evil),
+                )
             response.statusCode() shouldBe 415
-            send(http, "POST", "$base/transportOrders/Plain", order, headers = mapOf("Content-Type" to "text/plain")).statusCode() shouldBe 415
+            send(
+                http,
+                "POST",
+                "$base/transportOrders/Plain",
+                order,
+                headers = mapOf("Content-Type" to "text/plain"),
+            ).statusCode() shouldBe
+                415
             send(http, "GET", "$base/transportOrders").body() shouldBe "[]"
         }
     }
@@ -147,12 +166,34 @@ class CrossSiteRequestsTest : FunSpec({
             val host = URI(base).authority
             val fromEvil = mapOf("Origin" to evil, "Sec-Fetch-Site" to "cross-site")
             send(http, "POST", "$base/dispatcher/trigger", null, headers = fromEvil).statusCode() shouldBe 403
-            send(http, "PUT", "$base/vehicles/Vehicle-01/paused?newValue=true", null, headers = fromEvil).statusCode() shouldBe 403
-            send(http, "POST", "$base/transportOrders/E", order, json = true, headers = mapOf("Origin" to evil)).statusCode() shouldBe 403
+            send(
+                http,
+                "PUT",
+                "$base/vehicles/Vehicle-01/paused?newValue=true",
+                null,
+                headers = fromEvil,
+            ).statusCode() shouldBe
+                403
+            send(
+                http,
+                "POST",
+                "$base/transportOrders/E",
+                order,
+                json = true,
+                headers = mapOf("Origin" to evil),
+            ).statusCode() shouldBe
+                403
             send(http, "POST", "$base/dispatcher/trigger", null).statusCode() shouldBe 200
             val own = mapOf("Origin" to "http://$host", "Sec-Fetch-Site" to "same-origin", "X-Requested-With" to "kTCS")
             send(http, "POST", "$base/transportOrders/Own", order, json = true, headers = own).statusCode() shouldBe 200
-            send(http, "POST", "$base/dispatcher/trigger", null, headers = mapOf("Origin" to "http://$host")).statusCode() shouldBe 403
+            send(
+                http,
+                "POST",
+                "$base/dispatcher/trigger",
+                null,
+                headers = mapOf("Origin" to "http://$host"),
+            ).statusCode() shouldBe
+                403
         }
     }
 
@@ -160,10 +201,24 @@ class CrossSiteRequestsTest : FunSpec({
         withKernel { base ->
             send(http, "GET", "$base/vehicles", null, headers = mapOf("Origin" to evil)).headers()
                 .firstValue("Access-Control-Allow-Origin").isPresent shouldBe false
-            send(http, "OPTIONS", "$base/transportOrders/T", null, headers = mapOf("Origin" to evil)).statusCode() shouldBe 403
+            send(
+                http,
+                "OPTIONS",
+                "$base/transportOrders/T",
+                null,
+                headers = mapOf("Origin" to evil),
+            ).statusCode() shouldBe
+                403
         }
         withKernel("web.allowedOrigins=https://mes.example") { base ->
-            val preflight = send(http, "OPTIONS", "$base/transportOrders/T", null, headers = mapOf("Origin" to "https://mes.example"))
+            val preflight =
+                send(
+                    http,
+                    "OPTIONS",
+                    "$base/transportOrders/T",
+                    null,
+                    headers = mapOf("Origin" to "https://mes.example"),
+                )
             preflight.statusCode() shouldBe 200
             preflight.headers().firstValue("Access-Control-Allow-Origin").get() shouldBe "https://mes.example"
         }
@@ -172,10 +227,16 @@ class CrossSiteRequestsTest : FunSpec({
     test("the WebSocket refuses pages from other origins") {
         withKernel { base ->
             val ws = URI(base.replace("http:", "ws:") + "/ws")
-            val refused = runCatching { http.newWebSocketBuilder().header("Origin", evil).buildAsync(ws, RecordingWebSocket()).get() }
+            val refused =
+                runCatching {
+                    http.newWebSocketBuilder().header("Origin", evil).buildAsync(ws, RecordingWebSocket()).get()
+                }
             refused.isFailure shouldBe true
             val host = URI(base).authority
-            http.newWebSocketBuilder().header("Origin", "http://$host").buildAsync(ws, RecordingWebSocket()).get().abort()
+            http.newWebSocketBuilder().header(
+                "Origin",
+                "http://$host",
+            ).buildAsync(ws, RecordingWebSocket()).get().abort()
         }
     }
 
@@ -186,13 +247,23 @@ class CrossSiteRequestsTest : FunSpec({
             response.body() shouldContain "web.allowLocalShutdown"
         }
         withKernel("web.accessKey=secret") { base ->
-            send(http, "DELETE", "$base/kernel", null, headers = mapOf("X-Api-Access-Key" to "secret")).statusCode() shouldBe 200
+            send(
+                http,
+                "DELETE",
+                "$base/kernel",
+                null,
+                headers = mapOf("X-Api-Access-Key" to "secret"),
+            ).statusCode() shouldBe
+                200
         }
         withKernel("web.allowLocalShutdown=true") { base ->
             send(http, "DELETE", "$base/kernel", null).statusCode() shouldBe 200
         }
     }
 })
+
+private const val CHUNKED_POST = "POST /v1/transportOrders/Chunky HTTP/1.1\r\nHost: 127.0.0.1\r\n" +
+    "Content-Type: application/json\r\nTransfer-Encoding: chunked\r\nConnection: close\r\n\r\n"
 
 private val stepVehicles = object : KtcsExtension {
     override val name = "step-vehicles"

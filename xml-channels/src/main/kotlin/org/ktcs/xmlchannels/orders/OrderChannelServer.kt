@@ -2,14 +2,14 @@ package org.ktcs.xmlchannels.orders
 
 import com.fasterxml.jackson.core.exc.StreamReadException
 import com.fasterxml.jackson.databind.JsonMappingException
+import io.ktor.utils.io.writeFully
+import kotlinx.coroutines.withTimeoutOrNull
 import org.ktcs.api.service.TransportOrderService
+import org.ktcs.kernel.orders.XmlSafeText
+import org.ktcs.xmlchannels.Connection
 import org.ktcs.xmlchannels.HostXml
 import org.ktcs.xmlchannels.XmlChannelSettings
 import org.slf4j.LoggerFactory
-import io.ktor.utils.io.writeFully
-import kotlinx.coroutines.withTimeoutOrNull
-import org.ktcs.kernel.orders.XmlSafeText
-import org.ktcs.xmlchannels.Connection
 import java.io.IOException
 import javax.xml.stream.XMLStreamException
 

@@ -24,7 +24,11 @@ internal class OrderTelegramHandler(private val orders: TransportOrderService, p
         val script = try {
             scripts.read(order.fileName ?: throw TelegramContentException("transportScript without fileName"))
         } catch (error: TelegramContentException) {
-            return ScriptResponseTO(parsingSuccessful = false, id = order.id, reason = error.message?.let(XmlSafeText::printable))
+            return ScriptResponseTO(
+                parsingSuccessful = false,
+                id = order.id,
+                reason = error.message?.let(XmlSafeText::printable),
+            )
         }
         return ScriptResponseTO(parsingSuccessful = true, id = order.id, transport = runOrders(order.id, script))
     }

@@ -31,7 +31,10 @@ import kotlin.time.Duration.Companion.milliseconds
  */
 class ChannelFaultsTest : FunSpec({
     val telegram = sample("xml-telegram-two-orders.xml")
-    val order = TransportOrderCreation("TOrder-0001", listOf(Destination("Storage 01", "Load cargo"))).toOrder("TOrder-0001")
+    val order = TransportOrderCreation(
+        "TOrder-0001",
+        listOf(Destination("Storage 01", "Load cargo")),
+    ).toOrder("TOrder-0001")
 
     test("a message XML cannot carry is skipped; the status channel goes on with the next one") {
         val services = FakeKernelServices()
@@ -75,7 +78,11 @@ class ChannelFaultsTest : FunSpec({
 
     test("a flood of silent connections on one port is refused clearly and silences neither channel") {
         val services = FakeKernelServices()
-        val settings = testSettings().copy(ordersMaxConnections = 4, statusMaxConnections = 4, idleTimeout = 3_000.milliseconds)
+        val settings = testSettings().copy(
+            ordersMaxConnections = 4,
+            statusMaxConnections = 4,
+            idleTimeout = 3_000.milliseconds,
+        )
         withChannels(services, settings) { channels ->
             val flood = List(12) { HostClient.connect(channels.ordersPort) }
             val statusFlood = List(12) { Socket(InetAddress.getLoopbackAddress(), channels.statusPort) }

@@ -62,9 +62,10 @@ class TelegramFuzzTest : FunSpec({
                 }
             }
             val created = orderNames(web)
+            val failures = errors.size + (created - acknowledged).size
             println(
                 "xml fuzz (seed $SEED): cases tried $CASES, handled ${receipts + closed} " +
-                    "(receipts $receipts, closed without receipt $closed), failures ${errors.size + (created - acknowledged).size}, " +
+                    "(receipts $receipts, closed without receipt $closed), failures $failures, " +
                     "orders created ${created.size}",
             )
             errors.shouldBeEmpty()

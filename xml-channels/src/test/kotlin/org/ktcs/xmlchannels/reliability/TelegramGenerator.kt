@@ -59,7 +59,9 @@ class TelegramGenerator(seed: Long) {
 
     private fun script(): String =
         """<?xml version="1.0" encoding="UTF-8"?><tcsOrderSet><order xsi:type="transportScript" id="S" """ +
-            """fileName="${escape(pick("template.tcs", "../../../etc/passwd", "/etc/hostname", "missing.tcs", "", hostileText()))}" """ +
+            """fileName="${escape(
+                pick("template.tcs", "../../../etc/passwd", "/etc/hostname", "missing.tcs", "", hostileText()),
+            )}" """ +
             """xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance"/></tcsOrderSet>"""
 
     private fun hostileDocument(): String = pick(

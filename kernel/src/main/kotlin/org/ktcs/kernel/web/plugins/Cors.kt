@@ -38,7 +38,9 @@ class CorsConfig {
 /** Which browser origins may use the API: kTCS's own always, others as `web.allowedOrigins` lists them. */
 class BrowserOrigins(setting: String) {
     private val any = setting.trim() == "*"
-    private val listed = setting.split(',').map { it.trim().trimEnd('/') }.filter { it.isNotEmpty() && it != "*" }.toSet()
+    private val listed = setting.split(',').map {
+        it.trim().trimEnd('/')
+    }.filter { it.isNotEmpty() && it != "*" }.toSet()
 
     fun allowsCrossOrigin(origin: String): Boolean = any || origin.trimEnd('/') in listed
 

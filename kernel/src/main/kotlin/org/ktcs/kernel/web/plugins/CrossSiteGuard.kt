@@ -26,7 +26,10 @@ val CrossSiteGuard = createRouteScopedPlugin("CrossSiteGuard", ::CrossSiteGuardC
         if (call.request.headers[HttpHeaders.Upgrade].equals("websocket", ignoreCase = true)) {
             val origin = call.request.headers[HttpHeaders.Origin] ?: return@onCall
             if (!origins.allows(origin, call)) {
-                call.respondErrors(HttpStatusCode.Forbidden, "WebSocket connections from pages of origin '$origin' are refused")
+                call.respondErrors(
+                    HttpStatusCode.Forbidden,
+                    "WebSocket connections from pages of origin '$origin' are refused",
+                )
             }
             return@onCall
         }
@@ -52,7 +55,8 @@ private fun refusal(call: ApplicationCall, origins: BrowserOrigins): Pair<HttpSt
         return HttpStatusCode.Forbidden to "requests from pages of origin '$origin' may not change kTCS " +
             "(web.allowedOrigins lists the origins that may)"
     }
-    val programmatic = type != null || call.request.headers[CLIENT_HEADER] != null || call.request.headers[HEADER] != null
+    val programmatic =
+        type != null || call.request.headers[CLIENT_HEADER] != null || call.request.headers[HEADER] != null
     val fromBrowser = origin != null || call.request.headers["Sec-Fetch-Site"] != null
     if (fromBrowser && !programmatic) {
         return HttpStatusCode.Forbidden to "a browser request that changes kTCS needs Content-Type: application/json " +

@@ -2,11 +2,11 @@ package org.ktcs.kernel.web.plugins
 
 import io.ktor.http.ContentType
 import io.ktor.http.HttpStatusCode
+import io.ktor.http.cio.ParserException
+import io.ktor.http.content.OutgoingContent
 import io.ktor.server.application.Application
 import io.ktor.server.application.ApplicationCall
 import io.ktor.server.application.install
-import io.ktor.http.cio.ParserException
-import io.ktor.http.content.OutgoingContent
 import io.ktor.server.plugins.BadRequestException
 import io.ktor.server.plugins.PayloadTooLargeException
 import io.ktor.server.plugins.statuspages.StatusPages
@@ -49,18 +49,32 @@ fun Application.installErrorResponses() {
         }
         exception<CancellationException> { call, error ->
             // A stream (SSE, long polling) ended because the server stops or the client left: nothing went wrong.
-            log.debug("request {} {} ended: {}", call.request.local.method.value, call.request.local.uri, error.toString())
+            log.debug(
+                "request {} {} ended: {}",
+                call.request.local.method.value,
+                call.request.local.uri,
+                error.toString(),
+            )
         }
         exception<Throwable> { call, error ->
             if (error.causes().any { it is IOException || it is ParserException }) {
-                log.debug("request {} {} could not be read: {}", call.request.local.method.value, call.request.local.uri, error.toString())
-                return@exception call.respondErrors(HttpStatusCode.BadRequest, "the request could not be read: ${error.rootMessage()}")
+                log.debug(
+                    "request {} {} could not be read: {}",
+                    call.request.local.method.value,
+                    call.request.local.uri,
+                    error.toString(),
+                )
+                return@exception call.respondErrors(
+                    HttpStatusCode.BadRequest,
+                    "the request could not be read: ${error.rootMessage()}",
+                )
             }
             log.error("request {} {} failed", call.request.local.method.value, call.request.local.uri, error)
             call.respondErrors(HttpStatusCode.InternalServerError, "internal error; the kTCS log has the details")
         }
         HttpStatusCode.allStatusCodes.filter { it.value >= 400 }.forEach { code ->
-            statuses[code] = { call, content, _ -> if (!content.isJson()) call.respondErrors(code, describe(call, code)) }
+            statuses[code] =
+                { call, content, _ -> if (!content.isJson()) call.respondErrors(code, describe(call, code)) }
         }
     }
 }

@@ -26,7 +26,9 @@ class LiveWebSockets {
     /** Closes every session with 1001, waiting at most [timeoutMillis] for the close frames to go out. */
     fun closeAll(timeoutMillis: Long = 1_000) = runBlocking {
         withTimeoutOrNull(timeoutMillis) {
-            sessions.toList().forEach { runCatching { it.close(CloseReason(CloseReason.Codes.GOING_AWAY, "kTCS is stopping")) } }
+            sessions.toList().forEach {
+                runCatching { it.close(CloseReason(CloseReason.Codes.GOING_AWAY, "kTCS is stopping")) }
+            }
         }
     }
 }
