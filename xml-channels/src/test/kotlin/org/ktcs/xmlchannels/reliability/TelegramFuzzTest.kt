@@ -39,8 +39,13 @@ class TelegramFuzzTest : FunSpec({
             null,
             emptyMap(),
             listOf(
-                "web.bindAddress=127.0.0.1", "web.port=0", "xml.bindAddress=127.0.0.1", "xml.orders.port=0",
-                "xml.status.port=0", "xml.scriptsDirectory=$scripts", "xml.orders.idleTimeout=2000",
+                "web.bindAddress=127.0.0.1",
+                "web.port=0",
+                "xml.bindAddress=127.0.0.1",
+                "xml.orders.port=0",
+                "xml.status.port=0",
+                "xml.scriptsDirectory=$scripts",
+                "xml.orders.idleTimeout=2000",
             ),
         )
         val application = KernelApplication(config, PlantModelLoader.loadDemo(), listOf(XmlChannelsExtension())) {}
@@ -72,7 +77,8 @@ class TelegramFuzzTest : FunSpec({
             created shouldBe acknowledged
 
             // Both channels still work: a valid telegram is answered, and the status client hears of its order.
-            val valid = """<tcsOrderSet><order xsi:type="transport" id="After" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance">""" +
+            val valid = """<tcsOrderSet><order xsi:type="transport" id="After" """ +
+                """xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance">""" +
                 """<destination locationName="Storage 01" operation="Load cargo"/></order></tcsOrderSet>"""
             val receipt = HostClient.send(ordersPort, valid)
             receipt shouldContain "executionSuccessful=\"true\""
