@@ -218,6 +218,9 @@ class RestCaseGenerator(seed: Long) {
         "application/json; charset=utf-8",
         null,
         "text/plain",
+        "application/json; charset=nonsense",
+        ";;;",
+        "application/json; charset",
     )
 
     private fun origin(): Map<String, String> = if (random.nextBoolean()) {

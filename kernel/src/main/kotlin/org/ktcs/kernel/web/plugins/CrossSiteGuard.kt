@@ -6,7 +6,7 @@ import io.ktor.http.HttpMethod
 import io.ktor.http.HttpStatusCode
 import io.ktor.server.application.ApplicationCall
 import io.ktor.server.application.createRouteScopedPlugin
-import io.ktor.server.request.contentType
+import java.nio.charset.Charset
 
 /** A header any client may set to say "I am a program, not a form": browsers must ask (preflight) before sending it. */
 const val CLIENT_HEADER = "X-Requested-With"
@@ -44,23 +44,41 @@ class CrossSiteGuardConfig {
 
 private val CHANGING = setOf(HttpMethod.Post, HttpMethod.Put, HttpMethod.Delete, HttpMethod.Patch)
 
-private fun refusal(call: ApplicationCall, origins: BrowserOrigins): Pair<HttpStatusCode, String>? {
-    val type = call.request.headers[HttpHeaders.ContentType]?.let { call.request.contentType() }
-    if (type != null && !type.match(ContentType.Application.Json)) {
-        return HttpStatusCode.UnsupportedMediaType to
-            "request bodies must be JSON (Content-Type: application/json), not '${type.withoutParameters()}'"
+private typealias Refusal = Pair<HttpStatusCode, String>
+
+private fun refusal(call: ApplicationCall, origins: BrowserOrigins): Refusal? {
+    val header = call.request.headers[HttpHeaders.ContentType]
+    val type = header?.let { runCatching { ContentType.parse(it) }.getOrNull() }
+    return contentRefusal(header, type) ?: originRefusal(call, origins, hasBody = type != null)
+}
+
+/** A body must be JSON in a charset the JVM knows. */
+private fun contentRefusal(header: String?, type: ContentType?): Refusal? {
+    if (header == null) return null
+    if (type ==
+        null
+    ) {
+        return HttpStatusCode.UnsupportedMediaType to "malformed Content-Type '$header'; send application/json"
     }
+    val charset = type.parameter("charset")
+    if (charset != null && runCatching { Charset.isSupported(charset) }.getOrDefault(false).not()) {
+        return HttpStatusCode.UnsupportedMediaType to "unknown charset '$charset'; send UTF-8"
+    }
+    if (type.match(ContentType.Application.Json)) return null
+    return HttpStatusCode.UnsupportedMediaType to
+        "request bodies must be JSON (Content-Type: application/json), not '${type.withoutParameters()}'"
+}
+
+/** A browser's request must come from an allowed page and be one a page cannot send without asking first. */
+private fun originRefusal(call: ApplicationCall, origins: BrowserOrigins, hasBody: Boolean): Refusal? {
     val origin = call.request.headers[HttpHeaders.Origin]
     if (origin != null && !origins.allows(origin, call)) {
         return HttpStatusCode.Forbidden to "requests from pages of origin '$origin' may not change kTCS " +
             "(web.allowedOrigins lists the origins that may)"
     }
-    val programmatic =
-        type != null || call.request.headers[CLIENT_HEADER] != null || call.request.headers[HEADER] != null
+    val programmatic = hasBody || call.request.headers[CLIENT_HEADER] != null || call.request.headers[HEADER] != null
     val fromBrowser = origin != null || call.request.headers["Sec-Fetch-Site"] != null
-    if (fromBrowser && !programmatic) {
-        return HttpStatusCode.Forbidden to "a browser request that changes kTCS needs Content-Type: application/json " +
-            "or the $CLIENT_HEADER header"
-    }
-    return null
+    if (!fromBrowser || programmatic) return null
+    return HttpStatusCode.Forbidden to "a browser request that changes kTCS needs Content-Type: application/json " +
+        "or the $CLIENT_HEADER header"
 }
