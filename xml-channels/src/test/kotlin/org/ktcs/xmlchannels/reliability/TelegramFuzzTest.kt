@@ -1,25 +1,16 @@
 package org.ktcs.xmlchannels.reliability
 
-import ch.qos.logback.classic.Level
-import ch.qos.logback.classic.Logger
-import ch.qos.logback.classic.spi.ILoggingEvent
-import ch.qos.logback.core.read.ListAppender
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
-import kotlinx.coroutines.Dispatchers
-import kotlinx.coroutines.async
-import kotlinx.coroutines.runBlocking
-import kotlinx.coroutines.withContext
-import org.ktcs.api.order.TransportOrder
 import org.ktcs.kernel.app.KernelApplication
 import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.xmlchannels.HostClient
 import org.ktcs.xmlchannels.XmlChannelsExtension
+import org.ktcs.xmlchannels.errorsLoggedWhile
 import org.ktcs.xmlchannels.status.StatusClientSocket
-import org.slf4j.LoggerFactory
 import java.net.URI
 import java.net.http.HttpClient
 import java.net.http.HttpRequest
@@ -105,16 +96,4 @@ private fun orderNames(web: String): Set<String> {
     ).body()
     return Regex("\"name\"\\s*:\\s*\"([^\"]+)\"").findAll(body).map { it.groupValues[1] }
         .filter { it.startsWith("TOrder-") }.toSet()
-}
-
-private suspend fun errorsLoggedWhile(block: suspend () -> Unit): List<String> {
-    val root = LoggerFactory.getLogger(Logger.ROOT_LOGGER_NAME) as Logger
-    val appender = ListAppender<ILoggingEvent>().apply { start() }
-    root.addAppender(appender)
-    try {
-        block()
-    } finally {
-        root.detachAppender(appender)
-    }
-    return appender.list.filter { it.level == Level.ERROR }.map { "${it.loggerName}: ${it.formattedMessage}" }
 }
