@@ -1,6 +1,7 @@
 package org.ktcs.kernel.app
 
 import org.ktcs.api.model.PlantModel
+import org.ktcs.kernel.persistence.ModelRead
 import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.model.ModelProblem
 import org.ktcs.kernel.model.PlantModelValidator
@@ -15,23 +16,18 @@ object PlantModelLoader {
     /** The demo plant shipped inside the kernel. */
     const val DEMO_RESOURCE = "/org/ktcs/kernel/demo/ktcs-demo.xml"
 
-    fun load(file: Path?): LoadedModel = if (file ==
-        null
-    ) {
-        loadDemo()
-    } else {
-        validated(PlantModelFiles.read(file), file.toString())
-    }
+    fun load(file: Path?): LoadedModel = if (file == null) loadDemo() else validated(PlantModelFiles.readWithWarnings(file), file.toString())
 
     fun loadDemo(): LoadedModel {
         val stream = PlantModelLoader::class.java.getResourceAsStream(DEMO_RESOURCE)
             ?: error("the demo plant $DEMO_RESOURCE is missing from the kernel jar")
-        return stream.use { validated(PlantModelFiles.read(it, "demo plant"), "demo plant") }
+        return stream.use { validated(PlantModelFiles.readWithWarnings(it, "demo plant"), "demo plant") }
     }
 
-    private fun validated(model: PlantModel, source: String): LoadedModel {
-        val problems = PlantModelValidator.validate(model)
-        if (problems.any { it.isError }) throw InvalidModelException(model.name, problems)
-        return LoadedModel(model, source, problems)
+    /** The reader's warnings come first: they say what the file held that the model no longer does. */
+    private fun validated(read: ModelRead, source: String): LoadedModel {
+        val problems = read.warnings + PlantModelValidator.validate(read.model)
+        if (problems.any { it.isError }) throw InvalidModelException(read.model.name, problems)
+        return LoadedModel(read.model, source, problems)
     }
 }

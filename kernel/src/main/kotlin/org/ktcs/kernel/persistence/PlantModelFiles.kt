@@ -31,7 +31,14 @@ object PlantModelFiles {
      * @throws ModelFileException if the file cannot be read, is not well-formed XML, is not a plant model of a
      *   supported version, or holds a value its schema does not allow.
      */
-    fun read(path: Path): PlantModel {
+    fun read(path: Path): PlantModel = readWithWarnings(path).model
+
+    /**
+     * Reads the plant model in [path] like [read], with warnings for what the reader skipped or changed.
+     *
+     * @throws ModelFileException as [read] does.
+     */
+    fun readWithWarnings(path: Path): ModelRead {
         val bytes = try {
             Files.readAllBytes(path)
         } catch (e: IOException) {
@@ -45,7 +52,14 @@ object PlantModelFiles {
      *
      * @throws ModelFileException as [read] does.
      */
-    fun read(input: InputStream, sourceName: String): PlantModel {
+    fun read(input: InputStream, sourceName: String): PlantModel = readWithWarnings(input, sourceName).model
+
+    /**
+     * Reads a plant model from [input] like [read], with warnings for what the reader skipped or changed.
+     *
+     * @throws ModelFileException as [read] does.
+     */
+    fun readWithWarnings(input: InputStream, sourceName: String): ModelRead {
         val bytes = try {
             input.readAllBytes()
         } catch (e: IOException) {
