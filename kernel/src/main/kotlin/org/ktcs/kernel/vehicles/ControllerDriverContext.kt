@@ -59,7 +59,10 @@ class ControllerDriverContext(
     }
 
     override fun reportLoadHandlingDevices(devices: List<LoadHandlingDevice>) = later {
+        val previous = env.plant.vehicle(vehicleName).loadHandlingDevices
         env.plant.updateVehicle(vehicleName) { it.copy(loadHandlingDevices = devices) }
+        // An emptied vehicle no longer vetoes orders that load it.
+        if (previous != devices) env.vehicleMayBeAvailable()
     }
 
     override fun commandExecuted(command: MovementCommand) = later { controller.onCommandExecuted(command) }

@@ -201,8 +201,11 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
 
     /** The vehicle reported its position; outside an order that is where it holds resources. */
     fun onPositionReported(point: String?) {
+        val before = env.plant.vehicle(name).currentPosition
         val vehicle = env.plant.updateVehicle(name) { it.copy(currentPosition = point) }
         if (currentOrder == null) occupyPosition(vehicle.integrationLevel)
+        // A vehicle placed (or moved by hand) may be the one a waiting order needs.
+        if (currentOrder == null && point != before) env.vehicleMayBeAvailable()
     }
 
     /** Holds exactly the vehicle's current point, as its integration level asks. */

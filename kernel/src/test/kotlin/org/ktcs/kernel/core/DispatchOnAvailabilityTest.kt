@@ -1,0 +1,61 @@
+package org.ktcs.kernel.core
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.shouldBe
+import org.koin.dsl.bind
+import org.koin.dsl.module
+import org.ktcs.api.driver.DriverContext
+import org.ktcs.api.driver.VehicleDriver
+import org.ktcs.api.driver.VehicleDriverFactory
+import org.ktcs.api.order.Destination
+import org.ktcs.api.order.TransportOrderCreation
+import org.ktcs.api.order.TransportOrderState
+import org.ktcs.kernel.app.PlantModelLoader
+import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.simulation.SimulationKernel
+
+/** The dispatcher runs the moment a vehicle becomes able to work, not at its next periodic run (10 s). */
+class DispatchOnAvailabilityTest : FunSpec({
+    val config = ConfigLoader().load(
+        null,
+        emptyMap(),
+        listOf("dispatcher.parkIdleVehicles=false", "dispatcher.rechargeIdleVehicles=false"),
+    )
+    val contexts = mutableMapOf<String, DriverContext>()
+    val drivers = module {
+        single {
+            object : VehicleDriverFactory {
+                override val name = "step"
+                override val description = "test vehicle"
+                override fun create(vehicleName: String, context: DriverContext): VehicleDriver =
+                    StepDriver(vehicleName, context).also { contexts[vehicleName] = context }
+            }
+        } bind VehicleDriverFactory::class
+    }
+    val demo = PlantModelLoader.loadDemo().model
+    val unplaced = demo.copy(
+        vehicles = demo.vehicles.map { it.copy(properties = it.properties - "loopback:initialPosition") },
+    )
+    val trip = listOf(Destination("Goods in north 01", "Load cargo"))
+
+    fun SimulationKernel.state(order: String) = core.orders.require(order).state
+
+    fun SimulationKernel.now(action: () -> Unit) {
+        var done = false
+        context.execute {
+            action()
+            done = true
+        }
+        context.runUntil { done }
+        context.runUntilTime(context.elapsedMillis() + 50)
+    }
+
+    test("a vehicle that gets a position takes the waiting order at once") {
+        SimulationKernel(unplaced, config, listOf(drivers)).use { kernel ->
+            kernel.now { kernel.core.createTransportOrder(TransportOrderCreation("T", trip, intendedVehicle = "Vehicle-01")) }
+            kernel.state("T") shouldBe TransportOrderState.DISPATCHABLE
+            kernel.now { contexts.getValue("Vehicle-01").reportPosition("Point-0001") }
+            kernel.state("T") shouldBe TransportOrderState.BEING_PROCESSED
+        }
+    }
+})
