@@ -75,6 +75,12 @@ object KtcsSettings {
     val xmlScriptsDirectory =
         stringSetting("xml.scriptsDirectory", "scripts", "Directory of the .tcs batch scripts that XML telegrams name.")
 
+    val loopbackPlaceUnpositionedVehicles = booleanSetting(
+        "loopback.placeUnpositionedVehicles",
+        true,
+        "Place a simulated vehicle without loopback:initialPosition on a free park position (else a free point) " +
+            "when it starts, and say where in a notification.",
+    )
     val loopbackTimeFactor = positiveDoubleSetting(
         "loopback.timeFactor",
         1.0,
@@ -299,6 +305,7 @@ object KtcsSettings {
         dispatcherRechargeIdleVehicles,
         dispatcherKeepRecharging,
         dispatcherRecoveryThreshold,
+        loopbackPlaceUnpositionedVehicles,
         loopbackTimeFactor,
         loopbackOperatingTime,
         loopbackAcceleration,

@@ -28,6 +28,9 @@ class ControllerDriverContext(
 
     override fun vehicle(): Vehicle = env.plant.vehicle(vehicleName)
 
+    override fun vehiclePositions(): Map<String, String> = env.plant.vehicles()
+        .mapNotNull { vehicle -> vehicle.currentPosition?.let { vehicle.name to it } }.toMap()
+
     override fun reportPosition(point: String?) = later {
         if (point != null && env.plant.staticModel().point(point) == null) {
             env.notifications.publish(
