@@ -4,7 +4,6 @@ import org.ktcs.api.driver.DriverContext
 import org.ktcs.api.model.Point
 import org.ktcs.api.model.PointType
 import org.ktcs.api.model.Vehicle
-import org.slf4j.LoggerFactory
 
 /**
  * Chooses a start point for loopback vehicles whose model gives none (openTCS's plant files never do: there the
@@ -31,17 +30,12 @@ class Placement {
         return point
     }
 
-    /** What the operator reads: where the vehicle went and how to keep it there. */
+    /** What the operator reads (the kernel logs notifications too): where the vehicle went and how to keep it there. */
     fun announce(vehicle: Vehicle, point: Point): String {
         val kind = if (point.type == PointType.PARK_POSITION) "park position" else "point"
         val text = "${vehicle.name} had no position; placed it on the free $kind ${point.name}. Pin it with the " +
             "vehicle property ${LoopbackProperties.INITIAL_POSITION}=${point.name}, or move it in the overview's " +
             "loopback panel (loopback.placeUnpositionedVehicles=false leaves it unplaced)."
-        log.info(text)
         return text
-    }
-
-    private companion object {
-        val log = LoggerFactory.getLogger(Placement::class.java)
     }
 }
