@@ -5,7 +5,10 @@ import org.ktcs.kernel.persistence.v7.V7_VERSION
 import org.ktcs.kernel.persistence.v7.toV7
 import java.io.IOException
 import java.io.InputStream
+import java.nio.file.AccessDeniedException
 import java.nio.file.AtomicMoveNotSupportedException
+import java.nio.file.FileSystemException
+import java.nio.file.NoSuchFileException
 import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.StandardCopyOption.ATOMIC_MOVE
@@ -97,5 +100,11 @@ object PlantModelFiles {
         }
     }
 
-    private fun IOException.describe(): String = "${javaClass.simpleName}${message?.let { ": $it" } ?: ""}"
+    /** What went wrong in the user's words: "no such file", not the exception's class name. */
+    private fun IOException.describe(): String = when (this) {
+        is NoSuchFileException -> "no such file"
+        is AccessDeniedException -> "permission denied"
+        is FileSystemException -> reason ?: "the file system refused it"
+        else -> message ?: "input/output error"
+    }
 }

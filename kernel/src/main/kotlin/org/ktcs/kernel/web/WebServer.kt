@@ -1,5 +1,8 @@
 package org.ktcs.kernel.web
 
+import java.net.BindException
+import java.net.InetSocketAddress
+import java.net.ServerSocket
 import io.ktor.http.HttpStatusCode
 import io.ktor.serialization.kotlinx.json.json
 import io.ktor.server.application.Application
@@ -68,13 +71,31 @@ class WebServer(
             maxRequestBodyBytes = config[KtcsSettings.webMaxRequestBodySize] * 1024 * 1024,
             webSocketBufferSize = config[KtcsSettings.webSocketBufferSize],
         )
-        val started = embeddedServer(CIO, port = config[KtcsSettings.webPort], host = host) {
+        val port = config[KtcsSettings.webPort]
+        checkPortFree(host, port)
+        val started = embeddedServer(CIO, port = port, host = host) {
             webModule(version, services, options, shutdown, contributions)
         }
             .start(wait = false)
         server = started
-        val port = runBlocking { started.engine.resolvedConnectors().first().port }
-        return "http://$host:$port"
+        val resolved = runBlocking { started.engine.resolvedConnectors().first().port }
+        return "http://$host:$resolved"
+    }
+
+    /**
+     * Ktor's engine binds in a coroutine, so a port in use would surface as an uncaught stack trace without the
+     * port; trying the address first gives the user one line that names it.
+     */
+    private fun checkPortFree(host: String, port: Int) {
+        if (port == 0) return
+        try {
+            ServerSocket().use { socket ->
+                socket.reuseAddress = true
+                socket.bind(InetSocketAddress(host, port))
+            }
+        } catch (e: BindException) {
+            throw BindException("web API port $port on $host is already in use (${e.message}); set web.port to a free port")
+        }
     }
 
     fun stop() {
