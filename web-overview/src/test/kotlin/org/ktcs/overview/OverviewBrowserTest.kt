@@ -128,6 +128,11 @@ class OverviewBrowserTest : FunSpec({
         hypot(later.first - start.first, later.second - start.second) shouldBeGreaterThan 5.0
         page().locator("[data-vehicle='Vehicle-01']").click()
         assertThat(page().locator("#details h2")).hasText("Vehicle Vehicle-01")
+        // Its properties as a table under their heading, not the elements' names as text.
+        assertThat(page().locator("#details table.props th", ).filter(
+            Locator.FilterOptions().setHasText("loopback:initialPosition"),
+        )).hasCount(1)
+        assertThat(page().locator("#details")).not().containsText("[object")
         watched.screenshot("vehicle-details")
     }
 
@@ -203,6 +208,8 @@ class OverviewBrowserTest : FunSpec({
         assertThat(panel.locator("[data-role=vehicles] tbody tr")).hasCount(4)
         assertThat(panel.locator("[data-role=vehicles] tbody")).containsText("Vehicle-01")
         assertThat(panel.locator("[data-role=resources] tbody")).containsText("Point-")
+        val cells = panel.locator("td").allTextContents().map { cell -> cell.split(", ") }
+        cells.filter { it.size != it.toSet().size } shouldBe emptyList()
         watched.screenshot("panel-resources")
     }
 

@@ -125,7 +125,7 @@ function properties(list) {
 }
 
 function resources(sets) {
-  const names = (sets ?? []).flat();
+  const names = [...new Set((sets ?? []).flat())];
   return names.length === 0 ? '—' : names.join(', ');
 }
 
