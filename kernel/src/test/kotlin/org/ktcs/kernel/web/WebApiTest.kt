@@ -81,6 +81,19 @@ class WebApiTest : FunSpec({
         }
     }
 
+    test("the documented example for creating an order (Swagger UI's Try it out) works against the demo plant") {
+        val (application, base) = start()
+        try {
+            val document = json(call("GET", "$base/openapi.json")).jsonObject
+            val example = document["paths"]!!.jsonObject["/transportOrders/{NAME}"]!!.jsonObject["post"]!!
+                .jsonObject["requestBody"]!!.jsonObject["content"]!!.jsonObject["application/json"]!!
+                .jsonObject["example"]!!
+            call("POST", "$base/transportOrders/TOrder-002", example.toString()).statusCode() shouldBe 200
+        } finally {
+            application.stop()
+        }
+    }
+
     test("bad input is answered 400 with a message naming the problem, unknown objects 404") {
         val (application, base) = start()
         try {
