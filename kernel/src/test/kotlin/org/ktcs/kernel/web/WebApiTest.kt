@@ -81,14 +81,18 @@ class WebApiTest : FunSpec({
         }
     }
 
-    test("the documented example for creating an order (Swagger UI's Try it out) works against the demo plant") {
+    test("the documented request examples (Swagger UI's Try it out) work against the demo plant") {
         val (application, base) = start()
         try {
-            val document = json(call("GET", "$base/openapi.json")).jsonObject
-            val example = document["paths"]!!.jsonObject["/transportOrders/{NAME}"]!!.jsonObject["post"]!!
-                .jsonObject["requestBody"]!!.jsonObject["content"]!!.jsonObject["application/json"]!!
-                .jsonObject["example"]!!
-            call("POST", "$base/transportOrders/TOrder-002", example.toString()).statusCode() shouldBe 200
+            val paths = json(call("GET", "$base/openapi.json")).jsonObject["paths"]!!.jsonObject
+            fun example(path: String, method: String) = paths[path]!!.jsonObject[method]!!.jsonObject["requestBody"]!!
+                .jsonObject["content"]!!.jsonObject["application/json"]!!.jsonObject["example"]!!.toString()
+            call("POST", "$base/transportOrders/TOrder-002", example("/transportOrders/{NAME}", "post"))
+                .statusCode() shouldBe 200
+            call("POST", "$base/orderSequences/OrderSequence-01", example("/orderSequences/{NAME}", "post"))
+                .statusCode() shouldBe 200
+            call("POST", "$base/plantModel/topologyUpdateRequest", example("/plantModel/topologyUpdateRequest", "post"))
+                .statusCode() shouldBe 200
         } finally {
             application.stop()
         }
