@@ -18,11 +18,12 @@ internal class FreeOrderAssignment(
     private val refusals = HashMap<String, MutableList<Refusal>>()
 
     fun assign() {
-        val vehicles = run.vehicles.filter { !run.isAssigned(it) && availability.isAvailable(it) }
-        if (vehicles.isEmpty()) return
+        val unassigned = run.vehicles.filter { !run.isAssigned(it) }
+        val vehicles = unassigned.filter { availability.isAvailable(it) }
+        if (vehicles.isEmpty() && run.dispatchableOrders.isEmpty()) return
         val orders = run.dispatchableOrders.filter { eligibility.isFree(it) && isUnlocked(it) }
         if (vehicles.size < orders.size) vehiclesChoose(vehicles, orders) else ordersChoose(orders, vehicles)
-        recordDeferrals(orders)
+        recordDeferrals(orders, WaitingReasons(run, availability, vehicles))
     }
 
     private fun isUnlocked(order: TransportOrder): Boolean {
@@ -61,9 +62,11 @@ internal class FreeOrderAssignment(
         if (run.assign(candidate)) deferrals.assigned(candidate.order.name)
     }
 
-    private fun recordDeferrals(orders: List<TransportOrder>) {
+    /** Every order left waiting gets a reason: the vehicles' refusals, else why no vehicle could be asked. */
+    private fun recordDeferrals(orders: List<TransportOrder>, waiting: WaitingReasons) {
         orders.filter { !run.isAssigned(it) }.forEach { order ->
-            refusals[order.name]?.let { deferrals.record(order.name, describe(it)) }
+            val reason = refusals[order.name]?.let(::describe) ?: waiting.withoutCandidates(order) ?: return@forEach
+            deferrals.record(order.name, reason)
         }
     }
 }
