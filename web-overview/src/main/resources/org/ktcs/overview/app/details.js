@@ -2,6 +2,7 @@
 // refresh live; the actions stay put, so typing is never interrupted.
 
 import { el, fill, formatTime, propertyTable } from './dom.js';
+import { outcomeOf } from './orders-view.js';
 import { act, enc } from './actions.js';
 import { vehicleActions } from './vehicle-actions.js';
 
@@ -103,6 +104,7 @@ export class Details {
     }
     if (kind === 'vehicle') return vehicleActions(this.ktcs, name, this.objectOf({ kind, name })?.integrationLevel);
     if (kind === 'order') {
+      if (FINAL.has(this.objectOf({ kind, name })?.state)) return [];
       const withdraw = (immediate) => act(this.ktcs, `Withdraw ${name}${immediate ? ' immediately' : ''}`,
         () => this.ktcs.api('POST', `/transportOrders/${enc(name)}/withdrawal?immediate=${immediate}`));
       return [
@@ -143,10 +145,15 @@ function vehicleFacts(vehicle) {
   ]), properties(vehicle.properties)];
 }
 
+const FINAL = new Set(['FINISHED', 'FAILED', 'UNROUTABLE', 'WITHDRAWN']);
+
 function orderFacts(order) {
+  const final = FINAL.has(order.state);
+  const why = order.waitingReason ? [['Waiting because', order.waitingReason]]
+    : outcomeOf(order) ? [['Reason', outcomeOf(order)]] : [];
   return [
     propertyTable([
-      ['State', order.state], ['Vehicle', order.processingVehicle ?? '—'],
+      ['State', order.state], ...why, ['Vehicle', order.processingVehicle ?? '—'],
       ['Intended vehicle', order.intendedVehicle ?? '—'], ['Type', order.type],
       ['Created', formatTime(order.creationTime)], ['Deadline', formatTime(order.deadline)],
       ['Finished', formatTime(order.finishedTime)], ['Sequence', order.wrappingSequence ?? '—'],
@@ -159,7 +166,7 @@ function orderFacts(order) {
       el('span', { className: `state ${driveOrder.state}` }, driveOrder.state)),
     el('div', { className: 'route' }, driveOrder.route
       ? `Route: ${driveOrder.route.steps.map((s) => s.destinationPoint).join(' → ')} (costs ${driveOrder.route.costs})`
-      : 'Route: not yet computed')))),
+      : (final ? 'Route: none (the order ended before it was routed)' : 'Route: not yet computed'))))),
     properties(order.properties),
   ];
 }
