@@ -73,6 +73,11 @@ class KernelDispatchContext(private val kernel: KernelCore) : DispatchContext {
         creation,
     )
 
+    override fun vehicleWaiting(vehicle: String, reason: String?) {
+        if (kernel.plant.vehicleOrNull(vehicle)?.waitingReason == reason) return
+        kernel.plant.updateVehicle(vehicle) { it.copy(waitingReason = reason) }
+    }
+
     override fun deferred(order: String, reason: String) {
         kernel.orders.update(order) { current ->
             val last = current.history.lastOrNull { it.eventCode == HistoryCodes.ORDER_DISPATCHING_DEFERRED }

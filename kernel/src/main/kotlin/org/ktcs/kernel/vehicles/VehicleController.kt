@@ -196,7 +196,20 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         // assigned right then.
         env.plant.updateVehicle(name) { it.copy(transportOrder = null).withProcState(ProcState.IDLE, env) }
         env.orders.transition(order, state)
+        if (state != TransportOrderState.FINISHED) warnIfStillLoaded(order)
         env.vehicleMayBeAvailable()
+    }
+
+    /** An order that ends between its load and unload leaves a load that makes the driver refuse later orders. */
+    private fun warnIfStillLoaded(order: String) {
+        if (env.plant.vehicle(name).loadHandlingDevices.none { it.full }) return
+        env.notifications.publish(
+            name,
+            NotificationLevel.NOTEWORTHY,
+            "vehicle $name still carries a load after its order $order ended unfinished; its driver may refuse " +
+                "orders that load it until the load is removed (for a simulated vehicle: reset the load in its " +
+                "panel, or send it the driver message tcs:virtualVehicle:setLoaded with value=false)",
+        )
     }
 
     /** The vehicle reported its position; outside an order that is where it holds resources. */

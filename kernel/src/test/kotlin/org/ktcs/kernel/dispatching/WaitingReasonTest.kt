@@ -66,8 +66,10 @@ class WaitingReasonTest : FunSpec({
             kernel.now { kernel.core.controllers.setPaused("Vehicle-02", true) }
             kernel.order("T", vehicle = "Vehicle-02")
             kernel.reason("T") shouldBe "intended vehicle Vehicle-02: paused"
+            kernel.core.plant.vehicle("Vehicle-02").waitingReason shouldBe "paused"
             kernel.now { kernel.core.controllers.setPaused("Vehicle-02", false) }
             kernel.reason("T") shouldBe null
+            kernel.core.plant.vehicle("Vehicle-02").waitingReason shouldBe null
         }
     }
 

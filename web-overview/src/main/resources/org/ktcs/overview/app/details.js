@@ -135,6 +135,7 @@ function vehicleFacts(vehicle) {
   const pose = vehicle.pose?.position;
   return [propertyTable([
     ['State', vehicle.state?.state], ['Processing', vehicle.procState?.procState],
+    ...(vehicle.waitingReason ? [['Takes no orders because', vehicle.waitingReason]] : []),
     ['Integration', vehicle.integrationLevel], ['Paused', vehicle.paused ? 'yes' : 'no'],
     ['Energy', `${vehicle.energyLevel}%`], ['Position', vehicle.currentPosition ?? '—'],
     ['Precise position', pose ? `${pose.x}, ${pose.y} mm` : '—'],
