@@ -129,9 +129,11 @@ class OverviewBrowserTest : FunSpec({
         page().locator("[data-vehicle='Vehicle-01']").click()
         assertThat(page().locator("#details h2")).hasText("Vehicle Vehicle-01")
         // Its properties as a table under their heading, not the elements' names as text.
-        assertThat(page().locator("#details table.props th", ).filter(
-            Locator.FilterOptions().setHasText("loopback:initialPosition"),
-        )).hasCount(1)
+        assertThat(
+            page().locator("#details table.props th").filter(
+                Locator.FilterOptions().setHasText("loopback:initialPosition"),
+            ),
+        ).hasCount(1)
         assertThat(page().locator("#details")).not().containsText("[object")
         watched.screenshot("vehicle-details")
     }

@@ -92,8 +92,13 @@ class OverviewServerTest : FunSpec({
 
     test("an unknown theme name stops ./ktcs with that one line, not wrapped in Koin's definitions") {
         val err = java.io.ByteArrayOutputStream()
-        val args = listOf("--set", "web.port=0", "--set", "web.bindAddress=127.0.0.1", "--set", "overview.vehicleTheme=neon")
-        val code = org.ktcs.kernel.app.Ktcs(java.io.PrintStream(java.io.OutputStream.nullOutputStream()), java.io.PrintStream(err, true), emptyMap())
+        val args =
+            listOf("--set", "web.port=0", "--set", "web.bindAddress=127.0.0.1", "--set", "overview.vehicleTheme=neon")
+        val code = org.ktcs.kernel.app.Ktcs(
+            java.io.PrintStream(java.io.OutputStream.nullOutputStream()),
+            java.io.PrintStream(err, true),
+            emptyMap(),
+        )
             .run(args, awaitShutdown = {})
         code shouldBe 1
         err.toString().trim() shouldBe "ktcs: error: overview.vehicleTheme: unknown vehicles theme 'neon'; known: " +

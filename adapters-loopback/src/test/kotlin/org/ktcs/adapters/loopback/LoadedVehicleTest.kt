@@ -37,7 +37,11 @@ class LoadedVehicleTest : FunSpec({
     )
 
     test("the operator is told, the vehicle and the order say why, and a load reset lets it work again") {
-        SimulationKernel(PlantModelLoader.loadDemo().model, config, listOf(LoopbackExtension().module())).use { kernel ->
+        SimulationKernel(
+            PlantModelLoader.loadDemo().model,
+            config,
+            listOf(LoopbackExtension().module()),
+        ).use { kernel ->
             val vehicle = { kernel.core.plant.vehicle("Vehicle-01") }
             kernel.now { kernel.core.createTransportOrder(trip("First", "Goods in north 01", "Goods out 02")) }
             kernel.context.runUntil { vehicle().loadHandlingDevices.any { it.full } }

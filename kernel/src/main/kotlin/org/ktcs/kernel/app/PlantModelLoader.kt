@@ -1,10 +1,10 @@
 package org.ktcs.kernel.app
 
 import org.ktcs.api.model.PlantModel
-import org.ktcs.kernel.persistence.ModelRead
 import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.model.ModelProblem
 import org.ktcs.kernel.model.PlantModelValidator
+import org.ktcs.kernel.persistence.ModelRead
 import org.ktcs.kernel.persistence.PlantModelFiles
 import java.nio.file.Path
 
@@ -16,7 +16,13 @@ object PlantModelLoader {
     /** The demo plant shipped inside the kernel. */
     const val DEMO_RESOURCE = "/org/ktcs/kernel/demo/ktcs-demo.xml"
 
-    fun load(file: Path?): LoadedModel = if (file == null) loadDemo() else validated(PlantModelFiles.readWithWarnings(file), file.toString())
+    fun load(file: Path?): LoadedModel = if (file ==
+        null
+    ) {
+        loadDemo()
+    } else {
+        validated(PlantModelFiles.readWithWarnings(file), file.toString())
+    }
 
     fun loadDemo(): LoadedModel {
         val stream = PlantModelLoader::class.java.getResourceAsStream(DEMO_RESOURCE)

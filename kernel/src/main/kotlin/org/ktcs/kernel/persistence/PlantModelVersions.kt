@@ -11,8 +11,10 @@ import org.ktcs.kernel.persistence.v7.toDomain
 /** Which transfer objects read which schema version. */
 internal object PlantModelVersions {
     private val readers: Map<String, (ByteArray, ReadWarnings, String) -> PlantModel> = mapOf(
-        "0.0.2" to { bytes, warnings, source -> decode<V002PlantModelTO>(bytes, warnings, source).toDomain(source, warnings) },
-        "0.0.3" to { bytes, warnings, source -> decode<V002PlantModelTO>(bytes, warnings, source).toDomain(source, warnings) },
+        "0.0.2" to
+            { bytes, warnings, source -> decode<V002PlantModelTO>(bytes, warnings, source).toDomain(source, warnings) },
+        "0.0.3" to
+            { bytes, warnings, source -> decode<V002PlantModelTO>(bytes, warnings, source).toDomain(source, warnings) },
         "0.0.4" to { bytes, warnings, source -> decode<V004PlantModelTO>(bytes, warnings, source).toDomain(warnings) },
         "0.0.5" to { bytes, warnings, source -> decode<V004PlantModelTO>(bytes, warnings, source).toDomain(warnings) },
         "6.0.0" to { bytes, warnings, source -> decode<V7PlantModelTO>(bytes, warnings, source).toDomain() },

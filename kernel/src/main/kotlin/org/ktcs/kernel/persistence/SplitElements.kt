@@ -54,7 +54,13 @@ internal object SplitElements {
         return splits
     }
 
-    private fun describe(element: String, name: String?) = if (name == null) "<$element>" else "<$element name=\"$name\">"
+    private fun describe(element: String, name: String?) = if (name ==
+        null
+    ) {
+        "<$element>"
+    } else {
+        "<$element name=\"$name\">"
+    }
 
     /** Tracks one open element's children; [child] answers the element's description when [name] comes back. */
     private class Frame(val description: String) {

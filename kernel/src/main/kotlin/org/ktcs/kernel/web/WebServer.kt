@@ -1,8 +1,5 @@
 package org.ktcs.kernel.web
 
-import java.net.BindException
-import java.net.InetSocketAddress
-import java.net.ServerSocket
 import io.ktor.http.HttpStatusCode
 import io.ktor.serialization.kotlinx.json.json
 import io.ktor.server.application.Application
@@ -38,6 +35,9 @@ import org.ktcs.kernel.web.v1.plantmodel.plantModelRoutes
 import org.ktcs.kernel.web.v1.vehicles.vehicleRoutes
 import org.ktcs.kernel.web.ws.webSocketRoutes
 import org.slf4j.LoggerFactory
+import java.net.BindException
+import java.net.InetSocketAddress
+import java.net.ServerSocket
 
 /** What the web API's plugins are set to (from the `web.*` settings). */
 data class WebOptions(
@@ -94,7 +94,9 @@ class WebServer(
                 socket.bind(InetSocketAddress(host, port))
             }
         } catch (e: BindException) {
-            throw BindException("web API port $port on $host is already in use (${e.message}); set web.port to a free port")
+            throw BindException(
+                "web API port $port on $host is already in use (${e.message}); set web.port to a free port",
+            )
         }
     }
 

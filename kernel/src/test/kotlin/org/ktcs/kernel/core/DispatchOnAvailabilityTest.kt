@@ -52,7 +52,9 @@ class DispatchOnAvailabilityTest : FunSpec({
 
     test("a vehicle that gets a position takes the waiting order at once") {
         SimulationKernel(unplaced, config, listOf(drivers)).use { kernel ->
-            kernel.now { kernel.core.createTransportOrder(TransportOrderCreation("T", trip, intendedVehicle = "Vehicle-01")) }
+            kernel.now {
+                kernel.core.createTransportOrder(TransportOrderCreation("T", trip, intendedVehicle = "Vehicle-01"))
+            }
             kernel.state("T") shouldBe TransportOrderState.DISPATCHABLE
             kernel.now { contexts.getValue("Vehicle-01").reportPosition("Point-0001") }
             kernel.state("T") shouldBe TransportOrderState.BEING_PROCESSED

@@ -1,7 +1,7 @@
 package org.ktcs.kernel.persistence
 
-import io.kotest.core.spec.style.FunSpec
 import io.kotest.assertions.withClue
+import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import org.ktcs.api.model.BlockLayout
