@@ -9,6 +9,7 @@ import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.core.KernelCore
 import org.ktcs.kernel.simulation.SimulationKernel
 import org.ktcs.kernel.web.v1.orders.toDto
 
@@ -20,15 +21,7 @@ class LoadedVehicleTest : FunSpec({
         listOf("loopback.positionReportInterval=0", "dispatcher.parkIdleVehicles=false"),
     )
 
-    fun SimulationKernel.now(action: () -> Unit) {
-        var done = false
-        context.execute {
-            action()
-            done = true
-        }
-        context.runUntil { done }
-        context.runUntilTime(context.elapsedMillis() + 100)
-    }
+    fun SimulationKernel.now(action: KernelCore.() -> Unit) = execute(settleMillis = 100, action)
 
     fun trip(name: String, from: String, to: String) = TransportOrderCreation(
         name,

@@ -2,11 +2,6 @@ package org.ktcs.kernel.core
 
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.shouldBe
-import org.koin.dsl.bind
-import org.koin.dsl.module
-import org.ktcs.api.driver.DriverContext
-import org.ktcs.api.driver.VehicleDriver
-import org.ktcs.api.driver.VehicleDriverFactory
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
@@ -21,17 +16,7 @@ class DispatchOnAvailabilityTest : FunSpec({
         emptyMap(),
         listOf("dispatcher.parkIdleVehicles=false", "dispatcher.rechargeIdleVehicles=false"),
     )
-    val contexts = mutableMapOf<String, DriverContext>()
-    val drivers = module {
-        single {
-            object : VehicleDriverFactory {
-                override val name = "step"
-                override val description = "test vehicle"
-                override fun create(vehicleName: String, context: DriverContext): VehicleDriver =
-                    StepDriver(vehicleName, context).also { contexts[vehicleName] = context }
-            }
-        } bind VehicleDriverFactory::class
-    }
+    val drivers = RecordingStepDrivers()
     val demo = PlantModelLoader.loadDemo().model
     val unplaced = demo.copy(
         vehicles = demo.vehicles.map { it.copy(properties = it.properties - "loopback:initialPosition") },
@@ -40,23 +25,15 @@ class DispatchOnAvailabilityTest : FunSpec({
 
     fun SimulationKernel.state(order: String) = core.orders.require(order).state
 
-    fun SimulationKernel.now(action: () -> Unit) {
-        var done = false
-        context.execute {
-            action()
-            done = true
-        }
-        context.runUntil { done }
-        context.runUntilTime(context.elapsedMillis() + 50)
-    }
+    fun SimulationKernel.now(action: KernelCore.() -> Unit) = execute(settleMillis = 50, action)
 
     test("a vehicle that gets a position takes the waiting order at once") {
-        SimulationKernel(unplaced, config, listOf(drivers)).use { kernel ->
+        SimulationKernel(unplaced, config, listOf(drivers.module)).use { kernel ->
             kernel.now {
                 kernel.core.createTransportOrder(TransportOrderCreation("T", trip, intendedVehicle = "Vehicle-01"))
             }
             kernel.state("T") shouldBe TransportOrderState.DISPATCHABLE
-            kernel.now { contexts.getValue("Vehicle-01").reportPosition("Point-0001") }
+            kernel.now { drivers.contexts.getValue("Vehicle-01").reportPosition("Point-0001") }
             kernel.state("T") shouldBe TransportOrderState.BEING_PROCESSED
         }
     }

@@ -2,16 +2,12 @@ package org.ktcs.kernel.dispatching
 
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.shouldBe
-import org.koin.dsl.bind
-import org.koin.dsl.module
-import org.ktcs.api.driver.DriverContext
-import org.ktcs.api.driver.VehicleDriver
-import org.ktcs.api.driver.VehicleDriverFactory
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.config.ConfigLoader
-import org.ktcs.kernel.core.StepDriver
+import org.ktcs.kernel.core.KernelCore
+import org.ktcs.kernel.core.RecordingStepDrivers
 import org.ktcs.kernel.simulation.SimulationKernel
 import org.ktcs.kernel.web.v1.orders.toDto
 
@@ -22,47 +18,29 @@ class WaitingReasonTest : FunSpec({
         emptyMap(),
         listOf("dispatcher.parkIdleVehicles=false", "dispatcher.rechargeIdleVehicles=false"),
     )
-    val contexts = mutableMapOf<String, DriverContext>()
-    val drivers = module {
-        single {
-            object : VehicleDriverFactory {
-                override val name = "step"
-                override val description = "test vehicle"
-                override fun create(vehicleName: String, context: DriverContext): VehicleDriver =
-                    StepDriver(vehicleName, context).also { contexts[vehicleName] = context }
-            }
-        } bind VehicleDriverFactory::class
-    }
+    val drivers = RecordingStepDrivers()
     val demo = PlantModelLoader.loadDemo().model
     val trip = listOf(Destination("Goods in north 01", "Load cargo"), Destination("Goods out 02", "Unload cargo"))
 
-    fun SimulationKernel.now(action: () -> Unit) {
-        var done = false
-        context.execute {
-            action()
-            done = true
-        }
-        context.runUntil { done }
-        context.runUntilTime(context.elapsedMillis() + 50)
-    }
+    fun SimulationKernel.now(action: KernelCore.() -> Unit) = execute(settleMillis = 50, action)
 
     fun SimulationKernel.reason(order: String) = core.orders.require(order).toDto().waitingReason
 
     fun SimulationKernel.order(name: String, vehicle: String? = null) =
-        now { core.createTransportOrder(TransportOrderCreation(name, trip, intendedVehicle = vehicle)) }
+        now { createTransportOrder(TransportOrderCreation(name, trip, intendedVehicle = vehicle)) }
 
     test("no vehicle with a known position: said, and gone once one has a position") {
         val unplaced = demo.copy(vehicles = demo.vehicles.map { it.copy(properties = emptyMap()) })
-        SimulationKernel(unplaced, config, listOf(drivers)).use { kernel ->
+        SimulationKernel(unplaced, config, listOf(drivers.module)).use { kernel ->
             kernel.order("T")
             kernel.reason("T") shouldBe "no vehicle is available: position unknown"
-            kernel.now { contexts.getValue("Vehicle-01").reportPosition("Point-0001") }
+            kernel.now { drivers.contexts.getValue("Vehicle-01").reportPosition("Point-0001") }
             kernel.reason("T") shouldBe null
         }
     }
 
     test("a paused intended vehicle: said, and gone once it is resumed") {
-        SimulationKernel(demo, config, listOf(drivers)).use { kernel ->
+        SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
             kernel.now { kernel.core.controllers.setPaused("Vehicle-02", true) }
             kernel.order("T", vehicle = "Vehicle-02")
             kernel.reason("T") shouldBe "intended vehicle Vehicle-02: paused"
@@ -74,7 +52,7 @@ class WaitingReasonTest : FunSpec({
     }
 
     test("every vehicle busy: says with which order, and gone once one is free") {
-        SimulationKernel(demo, config, listOf(drivers)).use { kernel ->
+        SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
             listOf("A", "B", "C", "D").forEachIndexed { i, name -> kernel.order(name, vehicle = "Vehicle-0${i + 1}") }
             kernel.order("E")
             kernel.reason("E") shouldBe "vehicle Vehicle-01: processing order A; vehicle Vehicle-02: processing " +
@@ -85,7 +63,7 @@ class WaitingReasonTest : FunSpec({
     }
 
     test("a locked destination: said, and gone once it is unlocked") {
-        SimulationKernel(demo, config, listOf(drivers)).use { kernel ->
+        SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
             kernel.now { kernel.core.plant.setLocationLocked("Goods out 02", true) }
             kernel.order("T")
             kernel.reason("T") shouldBe "target location Goods out 02 is locked"
@@ -98,7 +76,7 @@ class WaitingReasonTest : FunSpec({
     }
 
     test("each change of reason is one history entry") {
-        SimulationKernel(demo, config, listOf(drivers)).use { kernel ->
+        SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
             kernel.now { kernel.core.controllers.setPaused("Vehicle-02", true) }
             kernel.order("T", vehicle = "Vehicle-02")
             kernel.now { kernel.core.dispatch() }
