@@ -263,6 +263,37 @@ object KtcsSettings {
             "or one an extension adds).",
     )
 
+    val watchdogStrandedVehicleCheckInterval = longSetting(
+        "watchdog.strandedVehicleCheckInterval",
+        10_000,
+        0L..86_400_000L,
+        "Milliseconds between checks for stranded vehicles (0: never).",
+    )
+    val watchdogStrandedVehicleDuration = longSetting(
+        "watchdog.strandedVehicleDurationThreshold",
+        60_000,
+        0L..86_400_000L,
+        "How long an idle vehicle may stand off a park position without an order (or hold an order without moving) " +
+            "before a notification says it is stranded.",
+    )
+    val watchdogTransportOrderCheckInterval = longSetting(
+        "watchdog.transportOrderCheckInterval",
+        10_000,
+        0L..86_400_000L,
+        "Milliseconds between checks for orders waiting too long or past their deadline (0: never).",
+    )
+    val watchdogIdleTransportOrderDuration = longSetting(
+        "watchdog.idleTransportOrderDurationThreshold",
+        60_000,
+        0L..86_400_000L,
+        "How long an order may wait unassigned before a notification says so, with its reason.",
+    )
+    val watchdogPositionOffRoute = booleanSetting(
+        "watchdog.reportPositionOffRoute",
+        true,
+        "Notify when a vehicle reports a position that is not on the route it was sent.",
+    )
+
     val extensionsDirectory = stringSetting(
         "extensions.directory",
         "extensions",
@@ -315,6 +346,11 @@ object KtcsSettings {
         loopbackPositionReportInterval,
         overviewVehicleTheme,
         overviewLocationTheme,
+        watchdogStrandedVehicleCheckInterval,
+        watchdogStrandedVehicleDuration,
+        watchdogTransportOrderCheckInterval,
+        watchdogIdleTransportOrderDuration,
+        watchdogPositionOffRoute,
         extensionsDirectory,
     )
 }

@@ -65,7 +65,7 @@ class KernelCore(
     val controllers = VehicleControllers(
         VehicleEnvironment(context, events, plant, orders, notifications, {
             scheduler
-        }, { router }, trigger::request, options.resourceManagement),
+        }, { router }, trigger::request, options.resourceManagement, options.watchdog.reportPositionOffRoute),
         driverFactories,
     )
 
@@ -76,6 +76,7 @@ class KernelCore(
     val dispatchable = LinkedHashMap<String, TransportOrder>()
     private var sweep: Cancellable? = null
     val watchdog = DeadlockWatchdog(this)
+    private val operationsWatchdog = OperationsWatchdog(this)
 
     init {
         events.listen(lifecycle::onEvent)
@@ -92,6 +93,7 @@ class KernelCore(
         controllers.start(options.enableDriversOnStart, options.initialIntegrationLevel)
         trigger.start()
         watchdog.start()
+        operationsWatchdog.start()
         scheduleSweep()
         trigger.request()
     }
@@ -99,6 +101,7 @@ class KernelCore(
     fun stop() {
         sweep?.cancel()
         watchdog.stop()
+        operationsWatchdog.stop()
         trigger.stop()
         controllers.stop()
         dispatcherProvider().terminate()

@@ -216,9 +216,22 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
     fun onPositionReported(point: String?) {
         val before = env.plant.vehicle(name).currentPosition
         val vehicle = env.plant.updateVehicle(name) { it.copy(currentPosition = point) }
-        if (currentOrder == null) occupyPosition(vehicle.integrationLevel)
+        if (currentOrder == null) occupyPosition(vehicle.integrationLevel) else checkOnRoute(point)
         // A vehicle placed (or moved by hand) may be the one a waiting order needs.
         if (currentOrder == null && point != before) env.vehicleMayBeAvailable()
+    }
+
+    /** A vehicle with an order reports only points of the commands it was sent; anything else is worth a look. */
+    private fun checkOnRoute(point: String?) {
+        if (!env.reportPositionOffRoute || point == null) return
+        val expected = sent.flatMap { listOfNotNull(it.command.step.sourcePoint, it.command.step.destinationPoint) }
+        if (expected.isEmpty() || point in expected) return
+        env.notifications.publish(
+            name,
+            NotificationLevel.IMPORTANT,
+            "vehicle $name reports position $point, which is not on its route (expected one of " +
+                "${expected.distinct().joinToString()})",
+        )
     }
 
     /** Holds exactly the vehicle's current point, as its integration level asks. */

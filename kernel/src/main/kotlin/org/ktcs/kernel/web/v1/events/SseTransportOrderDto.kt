@@ -5,11 +5,11 @@ import kotlinx.serialization.ExperimentalSerializationApi
 import kotlinx.serialization.Serializable
 import org.ktcs.api.order.DriveOrder
 import org.ktcs.api.order.TransportOrder
+import org.ktcs.kernel.orders.waitingReason
 import org.ktcs.kernel.web.v1.ObjectHistoryDto
 import org.ktcs.kernel.web.v1.orders.RouteDto
 import org.ktcs.kernel.web.v1.orders.orMaxInstant
 import org.ktcs.kernel.web.v1.orders.toDto
-import org.ktcs.kernel.web.v1.orders.waitingReason
 import org.ktcs.kernel.web.v1.toDto
 import org.ktcs.kernel.web.v1.toWire
 

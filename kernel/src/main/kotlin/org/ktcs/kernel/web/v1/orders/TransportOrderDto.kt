@@ -6,6 +6,7 @@ import kotlinx.serialization.Serializable
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.DriveOrder
 import org.ktcs.api.order.TransportOrder
+import org.ktcs.kernel.orders.waitingReason
 import org.ktcs.kernel.web.v1.ObjectHistoryDto
 import org.ktcs.kernel.web.v1.PropertyDto
 import org.ktcs.kernel.web.v1.toDto

@@ -1,4 +1,4 @@
-package org.ktcs.kernel.web.v1.orders
+package org.ktcs.kernel.orders
 
 import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.order.TransportOrderState
