@@ -197,6 +197,15 @@ class OverviewBrowserTest : FunSpec({
         page().locator("[data-tab=panel-statistics]").click()
         val panel = page().locator("[data-panel=statistics]")
         assertThat(panel.locator("[data-role=totals]")).hasText(Pattern.compile("Finished: [1-9]"))
+        // Park orders replaced by real work end FAILED, but are no failed work: only non-dispensable orders count.
+        val failedWork = Json.parseToJsonElement(ktcs!!.get("/v1/transportOrders").body()).jsonArray
+            .map { it.jsonObject }
+            .count { order ->
+                !order["dispensable"]!!.jsonPrimitive.boolean &&
+                    order["state"]!!.jsonPrimitive.content in setOf("FAILED", "UNROUTABLE")
+            }
+        assertThat(panel.locator("[data-role=totals]")).containsText("failed: $failedWork ·")
+        assertThat(panel.locator("[data-role=totals]")).containsText("park/recharge orders (not counted):")
         assertThat(panel.locator("[data-role=per-minute] rect:not([height='0'])").first()).isVisible()
         // A vehicle's row appears only once its time has been counted (the legend is always drawn).
         assertThat(panel.locator("[data-role=activity]"))

@@ -49,11 +49,11 @@ export class OrdersView {
     this.count.textContent = `${orders.length} order${orders.length === 1 ? '' : 's'}`;
     const now = Date.now();
     fill(this.body, orders.slice(0, SHOWN).map((order) => el('tr', { 'data-order': order.name },
-    el('td', {}, order.name),
+    el('td', { className: 'name', title: order.name }, order.name),
     el('td', { 'data-column': 'state', title: order.waitingReason ?? outcomeOf(order) ?? undefined },
       el('span', { className: `state ${order.state}` }, order.state)),
-    el('td', {}, order.processingVehicle ?? (order.intendedVehicle ? `(${order.intendedVehicle})` : '—')),
-    el('td', {}, destinations(order)),
+    el('td', { className: 'nowrap' }, order.processingVehicle ?? (order.intendedVehicle ? `(${order.intendedVehicle})` : '—')),
+    el('td', { className: 'wrap' }, destinations(order)),
     el('td', {}, formatDuration(ageOf(order, now))))));
   }
 }
