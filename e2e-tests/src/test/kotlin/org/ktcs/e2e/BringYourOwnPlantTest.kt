@@ -1,6 +1,5 @@
 package org.ktcs.e2e
 
-import io.kotest.assertions.withClue
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.engine.spec.tempdir
 import io.kotest.matchers.shouldBe
@@ -12,7 +11,6 @@ import java.net.http.HttpRequest
 import java.net.http.HttpResponse
 import java.nio.file.Files
 import java.nio.file.Path
-import kotlin.time.Duration.Companion.seconds
 
 /**
  * A new user's first contact: unmodified openTCS plant files (whose vehicles have no position) and a plant where no
@@ -70,22 +68,6 @@ class BringYourOwnPlantTest : FunSpec({
 
     test("a plant where no vehicle has a position") { runsOrders(unplacedDemo()) }
 })
-
-/** Reads the XML status channel until every order in [names] was reported FINISHED, or two minutes passed. */
-private fun Socket.finishedOrders(names: Set<String>): Set<String> {
-    val finished = mutableSetOf<String>()
-    val text = StringBuilder()
-    val reader = getInputStream().bufferedReader()
-    val deadline = System.nanoTime() + 120.seconds.inWholeNanoseconds
-    val chunk = CharArray(8192)
-    while (!finished.containsAll(names) && System.nanoTime() < deadline) {
-        val read = reader.read(chunk)
-        if (read < 0) break
-        text.append(chunk, 0, read)
-        Regex("orderName=\"([^\"]+)\" orderState=\"FINISHED\"").findAll(text).forEach { finished += it.groupValues[1] }
-    }
-    return withClue(text.takeLast(2000)) { finished.intersect(names) }
-}
 
 private val TELEGRAM = """
     <?xml version="1.0" encoding="UTF-8"?>
