@@ -55,7 +55,7 @@ class KernelDispatchContext(private val kernel: KernelCore) : DispatchContext {
             )
         }
         reservations[order] = vehicle
-        controller.withdraw(immediate = false)
+        controller.withdraw(immediate = false, reason = "replaced by order $order")
     }
 
     /** The vehicle finished or gave up its order: if an order was reserved for it, route and assign that now. */

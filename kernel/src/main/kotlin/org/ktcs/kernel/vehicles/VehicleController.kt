@@ -27,6 +27,7 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
     private var waiting: PlannedCommand? = null
     private var currentOrder: String? = null
     private var withdrawing = false
+    private var withdrawReason = ""
 
     var driver: VehicleDriver? = null
         private set
@@ -163,14 +164,18 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         if (index + 1 < order.driveOrders.size) startDriveOrder(index + 1) else endOrder(TransportOrderState.FINISHED)
     }
 
-    /** Withdraws the current order: at once ([immediate]), or after the commands already sent are carried out. */
-    fun withdraw(immediate: Boolean) {
+    /**
+     * Withdraws the current order: at once ([immediate]), or after the commands already sent are carried out.
+     * [reason] goes into the order's history, so operators see why it ended.
+     */
+    fun withdraw(immediate: Boolean, reason: String = "withdrawn") {
         val order = currentOrder ?: return
         if (env.orders.require(order).state ==
             TransportOrderState.BEING_PROCESSED
         ) {
-            env.orders.transition(order, TransportOrderState.WITHDRAWN)
+            env.orders.transition(order, TransportOrderState.WITHDRAWN, reason)
         }
+        withdrawReason = reason
         withdrawing = true
         remaining.clear()
         if (waiting != null) {
@@ -195,7 +200,8 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         // The vehicle is free before the order's final state is published: an order reserved for it may be
         // assigned right then.
         env.plant.updateVehicle(name) { it.copy(transportOrder = null).withProcState(ProcState.IDLE, env) }
-        env.orders.transition(order, state)
+        env.orders.transition(order, state, if (state == TransportOrderState.FAILED) withdrawReason else "")
+        withdrawReason = ""
         if (state != TransportOrderState.FINISHED) warnIfStillLoaded(order)
         env.vehicleMayBeAvailable()
     }

@@ -37,4 +37,18 @@ class DispatchOnAvailabilityTest : FunSpec({
             kernel.state("T") shouldBe TransportOrderState.BEING_PROCESSED
         }
     }
+
+    test("a dispensable order replaced by real work says so in its history") {
+        SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
+            val far = listOf(Destination("Goods out 02", "NOP"))
+            kernel.now {
+                createTransportOrder(
+                    TransportOrderCreation("Park", far, intendedVehicle = "Vehicle-01", dispensable = true),
+                )
+            }
+            kernel.now { createTransportOrder(TransportOrderCreation("Work", trip, intendedVehicle = "Vehicle-01")) }
+            kernel.context.runUntil { kernel.core.orders.require("Park").state.isFinal }
+            kernel.core.orders.require("Park").history.last().supplement shouldBe "replaced by order Work"
+        }
+    }
 })
