@@ -5,7 +5,6 @@ import io.kotest.matchers.collections.shouldHaveSize
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import java.net.Socket
-import kotlin.time.Duration.Companion.seconds
 
 /** A host system talks to `./ktcs` over the XML channels while four loopback vehicles drive. */
 class XmlChannelsEndToEndTest : FunSpec({
@@ -34,21 +33,7 @@ class XmlChannelsEndToEndTest : FunSpec({
                 val names = Regex("orderName=\"(TOrder-[^\"]+)\"").findAll(receipt).map { it.groupValues[1] }.toList()
                 names shouldHaveSize 2
 
-                val finished = mutableSetOf<String>()
-                val text = StringBuilder()
-                val reader = status.getInputStream().bufferedReader()
-                val deadline = System.nanoTime() + 120.seconds.inWholeNanoseconds
-                while (finished.size < 2 && System.nanoTime() < deadline) {
-                    val chunk = CharArray(8192)
-                    val read = reader.read(chunk)
-                    if (read < 0) break
-                    text.append(chunk, 0, read)
-                    Regex("orderName=\"(TOrder-[^\"]+)\" orderState=\"FINISHED\"").findAll(text).forEach {
-                        finished +=
-                            it.groupValues[1]
-                    }
-                }
-                finished shouldBe names.toSet()
+                status.finishedOrders(names.toSet()) shouldBe names.toSet()
             }
             ktcs.terminate() shouldBe 0
         }

@@ -14,6 +14,7 @@ import org.ktcs.kernel.config.KtcsSettings
 import org.ktcs.kernel.context.KernelContext
 import org.ktcs.kernel.core.KernelCore
 import org.ktcs.kernel.core.KernelOptions
+import org.ktcs.kernel.core.WatchdogOptions
 import org.ktcs.kernel.dispatching.DefaultDispatcher
 import org.ktcs.kernel.dispatching.DefaultRecoveryEvaluator
 import org.ktcs.kernel.dispatching.DispatcherConfiguration
@@ -61,6 +62,13 @@ fun kernelOptions(config: KtcsConfig) = KernelOptions(
     sweepIntervalMillis = config[KtcsSettings.orderPoolSweepInterval],
     sweepAgeMillis = config[KtcsSettings.orderPoolSweepAge],
     deadlockCheckIntervalMillis = config[KtcsSettings.kernelDeadlockCheckInterval],
+    watchdog = WatchdogOptions(
+        strandedVehicleCheckIntervalMillis = config[KtcsSettings.watchdogStrandedVehicleCheckInterval],
+        strandedVehicleMillis = config[KtcsSettings.watchdogStrandedVehicleDuration],
+        orderCheckIntervalMillis = config[KtcsSettings.watchdogTransportOrderCheckInterval],
+        idleOrderMillis = config[KtcsSettings.watchdogIdleTransportOrderDuration],
+        reportPositionOffRoute = config[KtcsSettings.watchdogPositionOffRoute],
+    ),
 )
 
 fun routerConfiguration(config: KtcsConfig) = RouterConfiguration(

@@ -128,6 +128,13 @@ class OverviewBrowserTest : FunSpec({
         hypot(later.first - start.first, later.second - start.second) shouldBeGreaterThan 5.0
         page().locator("[data-vehicle='Vehicle-01']").click()
         assertThat(page().locator("#details h2")).hasText("Vehicle Vehicle-01")
+        // Its properties as a table under their heading, not the elements' names as text.
+        assertThat(
+            page().locator("#details table.props th").filter(
+                Locator.FilterOptions().setHasText("loopback:initialPosition"),
+            ),
+        ).hasCount(1)
+        assertThat(page().locator("#details")).not().containsText("[object")
         watched.screenshot("vehicle-details")
     }
 
@@ -190,6 +197,15 @@ class OverviewBrowserTest : FunSpec({
         page().locator("[data-tab=panel-statistics]").click()
         val panel = page().locator("[data-panel=statistics]")
         assertThat(panel.locator("[data-role=totals]")).hasText(Pattern.compile("Finished: [1-9]"))
+        // Park orders replaced by real work end FAILED, but are no failed work: only non-dispensable orders count.
+        val failedWork = Json.parseToJsonElement(ktcs!!.get("/v1/transportOrders").body()).jsonArray
+            .map { it.jsonObject }
+            .count { order ->
+                !order["dispensable"]!!.jsonPrimitive.boolean &&
+                    order["state"]!!.jsonPrimitive.content in setOf("FAILED", "UNROUTABLE")
+            }
+        assertThat(panel.locator("[data-role=totals]")).containsText("failed: $failedWork ·")
+        assertThat(panel.locator("[data-role=totals]")).containsText("park/recharge orders (not counted):")
         assertThat(panel.locator("[data-role=per-minute] rect:not([height='0'])").first()).isVisible()
         // A vehicle's row appears only once its time has been counted (the legend is always drawn).
         assertThat(panel.locator("[data-role=activity]"))
@@ -203,6 +219,8 @@ class OverviewBrowserTest : FunSpec({
         assertThat(panel.locator("[data-role=vehicles] tbody tr")).hasCount(4)
         assertThat(panel.locator("[data-role=vehicles] tbody")).containsText("Vehicle-01")
         assertThat(panel.locator("[data-role=resources] tbody")).containsText("Point-")
+        val cells = panel.locator("td").allTextContents().map { cell -> cell.split(", ") }
+        cells.filter { it.size != it.toSet().size } shouldBe emptyList()
         watched.screenshot("panel-resources")
     }
 

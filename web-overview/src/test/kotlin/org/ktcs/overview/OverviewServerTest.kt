@@ -90,6 +90,21 @@ class OverviewServerTest : FunSpec({
             "overview.vehicleTheme: unknown vehicles theme 'neon'; known: default-vehicles, high-contrast-vehicles"
     }
 
+    test("an unknown theme name stops ./ktcs with that one line, not wrapped in Koin's definitions") {
+        val err = java.io.ByteArrayOutputStream()
+        val args =
+            listOf("--set", "web.port=0", "--set", "web.bindAddress=127.0.0.1", "--set", "overview.vehicleTheme=neon")
+        val code = org.ktcs.kernel.app.Ktcs(
+            java.io.PrintStream(java.io.OutputStream.nullOutputStream()),
+            java.io.PrintStream(err, true),
+            emptyMap(),
+        )
+            .run(args, awaitShutdown = {})
+        code shouldBe 1
+        err.toString().trim() shouldBe "ktcs: error: overview.vehicleTheme: unknown vehicles theme 'neon'; known: " +
+            "default-vehicles, high-contrast-vehicles"
+    }
+
     test("two contributions with the same name stop the start") {
         val loader = javaClass.classLoader
         val twice = List(2) { OverviewPanel("twin", "Twin", "org/example", classLoader = loader) }

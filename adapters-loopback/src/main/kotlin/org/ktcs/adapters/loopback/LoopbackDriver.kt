@@ -15,8 +15,10 @@ import org.ktcs.api.order.TransportOrder
  * profile on the kernel clock, one scheduled event per path rather than a tick every 100 ms, performs operations,
  * uses energy while driving and recharges at the recharge operation.
  *
- * - Enabling places it at its remembered position, else at the point named by [LoopbackProperties.INITIAL_POSITION]
- *   (else its position stays unknown), and takes energy, load and pause state from the kernel's view of the vehicle.
+ * - Enabling places it at its remembered position, else at the point named by [LoopbackProperties.INITIAL_POSITION],
+ *   else at the position the kernel knows, else (with [LoopbackSettings.placeUnpositionedVehicles]) on a free park
+ *   position or point chosen by [Placement], telling the operator; it takes energy, load and pause state from the
+ *   kernel's view of the vehicle.
  * - Disabling stops it where it is and reports state UNKNOWN: the driver no longer knows what the vehicle does. The
  *   position stays reported because the vehicle still occupies it.
  * - Pausing freezes driving and operations; charging goes on.
@@ -27,6 +29,7 @@ class LoopbackDriver(
     vehicleName: String,
     context: DriverContext,
     settings: LoopbackSettings = LoopbackSettings(),
+    private val placement: Placement? = Placement().takeIf { settings.placeUnpositionedVehicles },
 ) : BasicVehicleDriver(vehicleName, context, settings.commandQueueCapacity, settings.rechargeOperation) {
     private val vehicle = VirtualVehicle(context)
     private val simulation = Simulation(context, settings, vehicle, Queue())
@@ -66,7 +69,8 @@ class LoopbackDriver(
     override fun onPaused(paused: Boolean) = simulation.pause(paused)
 
     private fun placeAtStart(known: Vehicle) {
-        val name = vehicle.position ?: known.properties[LoopbackProperties.INITIAL_POSITION] ?: return
+        val name = vehicle.position ?: known.properties[LoopbackProperties.INITIAL_POSITION] ?: known.currentPosition
+            ?: return placeUnpositioned(known)
         val point = context.plantModel.point(name)
         if (point == null) {
             val text = "${known.name}: no point named '$name' to start at; position stays unknown"
@@ -74,6 +78,15 @@ class LoopbackDriver(
         }
         vehicle.reportPoint(point.name)
         vehicle.place(point.pose.position, point.pose.orientationAngle)
+    }
+
+    private fun placeUnpositioned(known: Vehicle) {
+        placement ?: return
+        val point = placement.startPoint(known, context)
+            ?: return context.notifyUser(NotificationLevel.NOTEWORTHY, "${known.name}: no free point to place it on")
+        vehicle.reportPoint(point.name)
+        vehicle.place(point.pose.position, point.pose.orientationAngle)
+        context.notifyUser(NotificationLevel.NOTEWORTHY, placement.announce(known, point))
     }
 
     private inner class Queue : CommandQueue {

@@ -6,12 +6,14 @@ import org.ktcs.api.driver.VehicleDriverFactory
 
 /** Creates [LoopbackDriver]s, which can drive any vehicle of the model. */
 class LoopbackDriverFactory(private val settings: LoopbackSettings = LoopbackSettings()) : VehicleDriverFactory {
+    private val placement = Placement()
+
     override val name: String = NAME
 
     override val description: String = "Simulated vehicle (loopback)"
 
     override fun create(vehicleName: String, context: DriverContext): VehicleDriver =
-        LoopbackDriver(vehicleName, context, settings)
+        LoopbackDriver(vehicleName, context, settings, placement.takeIf { settings.placeUnpositionedVehicles })
 
     companion object {
         /** The factory's name, for `tcs:preferredAdapterClass`. */

@@ -27,6 +27,7 @@ class LoopbackExtension : KtcsExtension {
             rechargePercentPerSecond = config[KtcsSettings.loopbackRechargeRate],
             energyDrainPercentPerKm = config[KtcsSettings.loopbackEnergyDrain],
             positionReportIntervalMillis = config[KtcsSettings.loopbackPositionReportInterval],
+            placeUnpositionedVehicles = config[KtcsSettings.loopbackPlaceUnpositionedVehicles],
         )
     }
 }

@@ -14,6 +14,7 @@ package org.ktcs.adapters.loopback
  * @property energyDrainPercentPerKm energy used per kilometre driven; 0 never discharges, as openTCS's loopback
  *   (openTCS issue #183).
  * @property commandQueueCapacity how many movement commands a vehicle holds at a time.
+ * @property placeUnpositionedVehicles place a vehicle that has no start point on a free park position or point.
  * @property positionReportIntervalMillis simulated ms between precise-position reports while driving; 0 reports only
  *   at points, which keeps long simulations fast.
  */
@@ -29,6 +30,7 @@ data class LoopbackSettings(
     val energyDrainPercentPerKm: Double = 10.0,
     val commandQueueCapacity: Int = 2,
     val positionReportIntervalMillis: Long = 500,
+    val placeUnpositionedVehicles: Boolean = true,
 ) {
     init {
         require(timeFactor > 0.0 && timeFactor.isFinite()) { "timeFactor must be positive, was $timeFactor" }

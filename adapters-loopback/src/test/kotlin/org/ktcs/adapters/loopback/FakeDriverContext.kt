@@ -58,6 +58,12 @@ class FakeDriverContext(
 
     override fun vehicle(): Vehicle = vehicle
 
+    /** Where the other vehicles stand, as a test sets it. */
+    var otherPositions: Map<String, String> = emptyMap()
+
+    override fun vehiclePositions(): Map<String, String> =
+        otherPositions + listOfNotNull(vehicle.currentPosition?.let { vehicle.name to it })
+
     override fun reportPosition(point: String?) = record(Report.PositionReport(point)) { copy(currentPosition = point) }
 
     override fun reportPrecisePosition(position: Position?, orientationAngle: Double) =

@@ -22,9 +22,9 @@ class LoopbackDriverLifecycleTest : FunSpec({
         harness.driver.isEnabled shouldBe true
     }
 
-    test("without an initial position the position stays unknown") {
+    test("without an initial position, and placing switched off, the position stays unknown") {
         val vehicle = LoopbackFixtures.vehicle().let { it.copy(properties = emptyMap()) }
-        val harness = Harness(vehicle = vehicle)
+        val harness = Harness(LoopbackSettings(placeUnpositionedVehicles = false), vehicle = vehicle)
         harness.context.reportsOf<Report.PositionReport>() shouldBe emptyList()
         harness.notifications() shouldBe emptyList()
     }

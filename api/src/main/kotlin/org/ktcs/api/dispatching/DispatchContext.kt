@@ -50,4 +50,10 @@ public interface DispatchContext {
 
     /** Notes in the order's history why it was not assigned yet (shown to operators; repeated reasons are merged). */
     public fun deferred(order: String, reason: String)
+
+    /**
+     * Notes why [vehicle], idle, took no order in this run (`null`: it took one, or no order waits), as
+     * [org.ktcs.api.model.Vehicle.waitingReason]. Called for every vehicle in every run; the kernel keeps only changes.
+     */
+    public fun vehicleWaiting(vehicle: String, reason: String?)
 }

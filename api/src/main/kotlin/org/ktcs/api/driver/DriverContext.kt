@@ -22,6 +22,9 @@ public interface DriverContext {
     /** The vehicle as the kernel knows it now. */
     public fun vehicle(): Vehicle
 
+    /** The points the kernel's vehicles stand on now, by vehicle name; vehicles without a known position are left out. */
+    public fun vehiclePositions(): Map<String, String>
+
     /** The vehicle reached the point named [point] (`null`: its position is unknown). */
     public fun reportPosition(point: String?)
 

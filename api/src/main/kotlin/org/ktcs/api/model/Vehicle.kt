@@ -21,6 +21,7 @@ import java.time.Instant
  * @property orderSequence name of the order sequence the vehicle processes, if any.
  * @property allocatedResources resources (points, paths, locations) the scheduler gave the vehicle, per movement step.
  * @property claimedResources resources the vehicle will need for the rest of its route, per movement step.
+ * @property waitingReason why the idle vehicle took no order in the dispatcher's last run (kTCS only), `null` if it took one or no order waits.
  */
 public data class Vehicle(
     override val name: String,
@@ -49,6 +50,7 @@ public data class Vehicle(
     val acceptableOrderTypes: Set<AcceptableOrderType> = setOf(AcceptableOrderType(ANY_ORDER_TYPE, 0)),
     val loadHandlingDevices: List<LoadHandlingDevice> = emptyList(),
     val rechargeOperation: String = DEFAULT_RECHARGE_OPERATION,
+    val waitingReason: String? = null,
 ) : PlantObject {
     public companion object {
         /** The order type that matches every order type. */

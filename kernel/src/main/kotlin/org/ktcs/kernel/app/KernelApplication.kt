@@ -58,6 +58,7 @@ class KernelApplication(
     }
 
     private fun startAll(): String {
+        loaded.warnings.forEach { log.warn("model {}: {}", loaded.source, it.line()) }
         // Extensions that start at once (the XML channels) are created after the kernel started, so their first
         // request finds it running.
         val app = koinApplication(createEagerInstances = false) {

@@ -12,13 +12,14 @@ import java.nio.file.Path
 class ModelTools(private val out: PrintStream) {
     /** Prints the summary and any warnings (exit 0), or every problem (exit 1). */
     fun check(file: Path): Int {
-        val model = try {
-            PlantModelFiles.read(file)
+        val read = try {
+            PlantModelFiles.readWithWarnings(file)
         } catch (error: ModelFileException) {
             out.println("error: ${error.message}")
             return Ktcs.EXIT_FAILURE
         }
-        val problems = PlantModelValidator.validate(model)
+        val model = read.model
+        val problems = read.warnings + PlantModelValidator.validate(model)
         val errors = problems.filter { it.isError }
         if (errors.isNotEmpty()) {
             out.println("$file: ${errors.size} error(s), the model cannot be loaded")
@@ -32,8 +33,9 @@ class ModelTools(private val out: PrintStream) {
 
     /** Reads [input] in any supported version and writes it as 7.0.0; refuses a model with errors. */
     fun convert(input: Path, output: Path): Int {
-        val model = PlantModelFiles.read(input)
-        val problems = PlantModelValidator.validate(model)
+        val read = PlantModelFiles.readWithWarnings(input)
+        val model = read.model
+        val problems = read.warnings + PlantModelValidator.validate(model)
         if (problems.any { it.isError }) throw InvalidModelException(model.name, problems)
         PlantModelFiles.write(model, output)
         out.println("wrote $output (version 7.0.0): ${model.summary()}")

@@ -4,6 +4,7 @@ import org.ktcs.api.model.PlantModel
 import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.model.ModelProblem
 import org.ktcs.kernel.model.PlantModelValidator
+import org.ktcs.kernel.persistence.ModelRead
 import org.ktcs.kernel.persistence.PlantModelFiles
 import java.nio.file.Path
 
@@ -20,18 +21,19 @@ object PlantModelLoader {
     ) {
         loadDemo()
     } else {
-        validated(PlantModelFiles.read(file), file.toString())
+        validated(PlantModelFiles.readWithWarnings(file), file.toString())
     }
 
     fun loadDemo(): LoadedModel {
         val stream = PlantModelLoader::class.java.getResourceAsStream(DEMO_RESOURCE)
             ?: error("the demo plant $DEMO_RESOURCE is missing from the kernel jar")
-        return stream.use { validated(PlantModelFiles.read(it, "demo plant"), "demo plant") }
+        return stream.use { validated(PlantModelFiles.readWithWarnings(it, "demo plant"), "demo plant") }
     }
 
-    private fun validated(model: PlantModel, source: String): LoadedModel {
-        val problems = PlantModelValidator.validate(model)
-        if (problems.any { it.isError }) throw InvalidModelException(model.name, problems)
-        return LoadedModel(model, source, problems)
+    /** The reader's warnings come first: they say what the file held that the model no longer does. */
+    private fun validated(read: ModelRead, source: String): LoadedModel {
+        val problems = read.warnings + PlantModelValidator.validate(read.model)
+        if (problems.any { it.isError }) throw InvalidModelException(read.model.name, problems)
+        return LoadedModel(read.model, source, problems)
     }
 }

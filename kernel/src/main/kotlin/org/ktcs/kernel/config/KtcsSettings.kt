@@ -125,6 +125,12 @@ object KtcsSettings {
     val xmlScriptsDirectory =
         stringSetting("xml.scriptsDirectory", "scripts", "Directory of the .tcs batch scripts that XML telegrams name.")
 
+    val loopbackPlaceUnpositionedVehicles = booleanSetting(
+        "loopback.placeUnpositionedVehicles",
+        true,
+        "Place a simulated vehicle without loopback:initialPosition on a free park position (else a free point) " +
+            "when it starts, and say where in a notification.",
+    )
     val loopbackTimeFactor = positiveDoubleSetting(
         "loopback.timeFactor",
         1.0,
@@ -307,6 +313,37 @@ object KtcsSettings {
             "or one an extension adds).",
     )
 
+    val watchdogStrandedVehicleCheckInterval = longSetting(
+        "watchdog.strandedVehicleCheckInterval",
+        10_000,
+        0L..86_400_000L,
+        "Milliseconds between checks for stranded vehicles (0: never).",
+    )
+    val watchdogStrandedVehicleDuration = longSetting(
+        "watchdog.strandedVehicleDurationThreshold",
+        60_000,
+        0L..86_400_000L,
+        "How long an idle vehicle may stand off a park position without an order (or hold an order without moving) " +
+            "before a notification says it is stranded.",
+    )
+    val watchdogTransportOrderCheckInterval = longSetting(
+        "watchdog.transportOrderCheckInterval",
+        10_000,
+        0L..86_400_000L,
+        "Milliseconds between checks for orders waiting too long or past their deadline (0: never).",
+    )
+    val watchdogIdleTransportOrderDuration = longSetting(
+        "watchdog.idleTransportOrderDurationThreshold",
+        60_000,
+        0L..86_400_000L,
+        "How long an order may wait unassigned before a notification says so, with its reason.",
+    )
+    val watchdogPositionOffRoute = booleanSetting(
+        "watchdog.reportPositionOffRoute",
+        true,
+        "Notify when a vehicle reports a position that is not on the route it was sent.",
+    )
+
     val extensionsDirectory = stringSetting(
         "extensions.directory",
         "extensions",
@@ -357,6 +394,7 @@ object KtcsSettings {
         dispatcherRechargeIdleVehicles,
         dispatcherKeepRecharging,
         dispatcherRecoveryThreshold,
+        loopbackPlaceUnpositionedVehicles,
         loopbackTimeFactor,
         loopbackOperatingTime,
         loopbackAcceleration,
@@ -366,6 +404,11 @@ object KtcsSettings {
         loopbackPositionReportInterval,
         overviewVehicleTheme,
         overviewLocationTheme,
+        watchdogStrandedVehicleCheckInterval,
+        watchdogStrandedVehicleDuration,
+        watchdogTransportOrderCheckInterval,
+        watchdogIdleTransportOrderDuration,
+        watchdogPositionOffRoute,
         extensionsDirectory,
     )
 }

@@ -66,7 +66,7 @@ class KernelCore(
     val controllers = VehicleControllers(
         VehicleEnvironment(context, events, plant, orders, notifications, {
             scheduler
-        }, { router }, trigger::request, options.resourceManagement),
+        }, { router }, trigger::request, options.resourceManagement, options.watchdog.reportPositionOffRoute),
         driverFactories,
     )
 
@@ -77,6 +77,7 @@ class KernelCore(
     val dispatchable = LinkedHashMap<String, TransportOrder>()
     private var sweep: Cancellable? = null
     val watchdog = DeadlockWatchdog(this)
+    private val operationsWatchdog = OperationsWatchdog(this)
 
     init {
         events.listen(lifecycle::onEvent)
@@ -93,6 +94,7 @@ class KernelCore(
         controllers.start(options.enableDriversOnStart, options.initialIntegrationLevel)
         trigger.start()
         watchdog.start()
+        operationsWatchdog.start()
         scheduleSweep()
         trigger.request()
     }
@@ -100,6 +102,7 @@ class KernelCore(
     fun stop() {
         sweep?.cancel()
         watchdog.stop()
+        operationsWatchdog.stop()
         trigger.stop()
         controllers.stop()
         dispatcherProvider().terminate()

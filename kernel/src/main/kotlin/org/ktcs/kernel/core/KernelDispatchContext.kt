@@ -55,7 +55,7 @@ class KernelDispatchContext(private val kernel: KernelCore) : DispatchContext {
             )
         }
         reservations[order] = vehicle
-        controller.withdraw(immediate = false)
+        controller.withdraw(immediate = false, reason = "replaced by order $order")
     }
 
     /** The vehicle finished or gave up its order: if an order was reserved for it, route and assign that now. */
@@ -72,6 +72,11 @@ class KernelDispatchContext(private val kernel: KernelCore) : DispatchContext {
     override fun createTransportOrder(creation: TransportOrderCreation): TransportOrder = kernel.createTransportOrder(
         creation,
     )
+
+    override fun vehicleWaiting(vehicle: String, reason: String?) {
+        if (kernel.plant.vehicleOrNull(vehicle)?.waitingReason == reason) return
+        kernel.plant.updateVehicle(vehicle) { it.copy(waitingReason = reason) }
+    }
 
     override fun deferred(order: String, reason: String) {
         kernel.orders.update(order) { current ->

@@ -21,4 +21,15 @@ data class KernelOptions(
     val sweepAgeMillis: Long = 86_400_000,
     /** How often the deadlock watchdog looks for vehicles waiting for each other in a cycle. */
     val deadlockCheckIntervalMillis: Long = 1_000,
+    /** openTCS's watchdog checks (stranded vehicles, waiting and late orders, positions off route). */
+    val watchdog: WatchdogOptions = WatchdogOptions(),
+)
+
+/** When [OperationsWatchdog] speaks up; an interval of 0 switches its check off. */
+data class WatchdogOptions(
+    val strandedVehicleCheckIntervalMillis: Long = 10_000,
+    val strandedVehicleMillis: Long = 60_000,
+    val orderCheckIntervalMillis: Long = 10_000,
+    val idleOrderMillis: Long = 60_000,
+    val reportPositionOffRoute: Boolean = true,
 )

@@ -16,13 +16,16 @@ internal class FreeOrderAssignment(
 ) {
     private val eligibility = OrderEligibility(run)
     private val refusals = HashMap<String, MutableList<Refusal>>()
+    private val refusalsByVehicle = HashMap<String, MutableSet<String>>()
 
     fun assign() {
         val vehicles = run.vehicles.filter { !run.isAssigned(it) && availability.isAvailable(it) }
-        if (vehicles.isEmpty()) return
         val orders = run.dispatchableOrders.filter { eligibility.isFree(it) && isUnlocked(it) }
-        if (vehicles.size < orders.size) vehiclesChoose(vehicles, orders) else ordersChoose(orders, vehicles)
-        recordDeferrals(orders)
+        if (vehicles.isNotEmpty() && orders.isNotEmpty()) {
+            if (vehicles.size < orders.size) vehiclesChoose(vehicles, orders) else ordersChoose(orders, vehicles)
+        }
+        recordDeferrals(orders, WaitingReasons(run, availability, vehicles))
+        reportIdleVehicles(orders)
     }
 
     private fun isUnlocked(order: TransportOrder): Boolean {
@@ -53,6 +56,7 @@ internal class FreeOrderAssignment(
 
         is Assessment.Refused -> {
             refusals.getOrPut(candidate.order.name) { mutableListOf() } += assessment.refusal
+            refusalsByVehicle.getOrPut(candidate.vehicle.name) { LinkedHashSet() } += assessment.refusal.detail
             null
         }
     }
@@ -61,9 +65,25 @@ internal class FreeOrderAssignment(
         if (run.assign(candidate)) deferrals.assigned(candidate.order.name)
     }
 
-    private fun recordDeferrals(orders: List<TransportOrder>) {
+    /** Every order left waiting gets a reason: the vehicles' refusals, else why no vehicle could be asked. */
+    private fun recordDeferrals(orders: List<TransportOrder>, waiting: WaitingReasons) {
         orders.filter { !run.isAssigned(it) }.forEach { order ->
-            refusals[order.name]?.let { deferrals.record(order.name, describe(it)) }
+            val reason = refusals[order.name]?.let(::describe) ?: waiting.withoutCandidates(order) ?: return@forEach
+            deferrals.record(order.name, reason)
         }
+    }
+
+    /** Tells why each idle vehicle took none of the orders left waiting: it is unavailable, or it refused them. */
+    private fun reportIdleVehicles(orders: List<TransportOrder>) {
+        val waiting = orders.filter { !run.isAssigned(it) }
+        for (vehicle in run.vehicles) run.context.vehicleWaiting(vehicle.name, idleReason(vehicle, waiting))
+    }
+
+    private fun idleReason(vehicle: Vehicle, waiting: List<TransportOrder>): String? {
+        if (run.isAssigned(vehicle) || vehicle.transportOrder != null) return null
+        if (waiting.none { it.isFor(vehicle) }) return null
+        val unavailable = availability.reasons(vehicle)
+        if (unavailable.isNotEmpty()) return unavailable.joinToString(", ")
+        return refusalsByVehicle[vehicle.name]?.joinToString("; ", prefix = "refuses the waiting orders: ")
     }
 }

@@ -1,5 +1,6 @@
 package org.ktcs.kernel.extension
 
+import org.ktcs.kernel.config.ConfigException
 import java.net.BindException
 import java.nio.file.Path
 
@@ -11,8 +12,9 @@ class ExtensionFailures(private val extensions: List<KtcsExtension>, private val
     /** [error] as an [ExtensionException] naming the extension it came from, or unchanged if none did. */
     fun explain(error: Throwable): Throwable {
         if (error is ExtensionException) return error
-        // A port in use is the user's to fix, and the launcher says so in its own words.
-        if (generateSequence(error) { it.cause }.any { it is BindException }) return error
+        // A port in use or a bad setting is the user's to fix, and the launcher says so in its own words, without
+        // the Koin definitions it was found in.
+        if (generateSequence(error) { it.cause }.any { it is BindException || it is ConfigException }) return error
         val culprit = culprit(error) ?: return error
         return ExtensionException(
             "extension '${culprit.name}'${jarOf(culprit).from()} failed to start: ${error.describe()}",

@@ -5,8 +5,11 @@ import org.ktcs.kernel.persistence.v7.V7_VERSION
 import org.ktcs.kernel.persistence.v7.toV7
 import java.io.IOException
 import java.io.InputStream
+import java.nio.file.AccessDeniedException
 import java.nio.file.AtomicMoveNotSupportedException
+import java.nio.file.FileSystemException
 import java.nio.file.Files
+import java.nio.file.NoSuchFileException
 import java.nio.file.Path
 import java.nio.file.StandardCopyOption.ATOMIC_MOVE
 import java.nio.file.StandardCopyOption.REPLACE_EXISTING
@@ -31,7 +34,14 @@ object PlantModelFiles {
      * @throws ModelFileException if the file cannot be read, is not well-formed XML, is not a plant model of a
      *   supported version, or holds a value its schema does not allow.
      */
-    fun read(path: Path): PlantModel {
+    fun read(path: Path): PlantModel = readWithWarnings(path).model
+
+    /**
+     * Reads the plant model in [path] like [read], with warnings for what the reader skipped or changed.
+     *
+     * @throws ModelFileException as [read] does.
+     */
+    fun readWithWarnings(path: Path): ModelRead {
         val bytes = try {
             Files.readAllBytes(path)
         } catch (e: IOException) {
@@ -45,7 +55,14 @@ object PlantModelFiles {
      *
      * @throws ModelFileException as [read] does.
      */
-    fun read(input: InputStream, sourceName: String): PlantModel {
+    fun read(input: InputStream, sourceName: String): PlantModel = readWithWarnings(input, sourceName).model
+
+    /**
+     * Reads a plant model from [input] like [read], with warnings for what the reader skipped or changed.
+     *
+     * @throws ModelFileException as [read] does.
+     */
+    fun readWithWarnings(input: InputStream, sourceName: String): ModelRead {
         val bytes = try {
             input.readAllBytes()
         } catch (e: IOException) {
@@ -83,5 +100,11 @@ object PlantModelFiles {
         }
     }
 
-    private fun IOException.describe(): String = "${javaClass.simpleName}${message?.let { ": $it" } ?: ""}"
+    /** What went wrong in the user's words: "no such file", not the exception's class name. */
+    private fun IOException.describe(): String = when (this) {
+        is NoSuchFileException -> "no such file"
+        is AccessDeniedException -> "permission denied"
+        is FileSystemException -> reason ?: "the file system refused it"
+        else -> message ?: "input/output error"
+    }
 }

@@ -10,25 +10,29 @@ import org.ktcs.kernel.persistence.v7.toDomain
 
 /** Which transfer objects read which schema version. */
 internal object PlantModelVersions {
-    private val readers: Map<String, (ByteArray, String) -> PlantModel> = mapOf(
-        "0.0.2" to { bytes, source -> decode<V002PlantModelTO>(bytes, source).toDomain(source) },
-        "0.0.3" to { bytes, source -> decode<V002PlantModelTO>(bytes, source).toDomain(source) },
-        "0.0.4" to { bytes, source -> decode<V004PlantModelTO>(bytes, source).toDomain() },
-        "0.0.5" to { bytes, source -> decode<V004PlantModelTO>(bytes, source).toDomain() },
-        "6.0.0" to { bytes, source -> decode<V7PlantModelTO>(bytes, source).toDomain() },
-        "7.0.0" to { bytes, source -> decode<V7PlantModelTO>(bytes, source).toDomain() },
+    private val readers: Map<String, (ByteArray, ReadWarnings, String) -> PlantModel> = mapOf(
+        "0.0.2" to
+            { bytes, warnings, source -> decode<V002PlantModelTO>(bytes, warnings, source).toDomain(source, warnings) },
+        "0.0.3" to
+            { bytes, warnings, source -> decode<V002PlantModelTO>(bytes, warnings, source).toDomain(source, warnings) },
+        "0.0.4" to { bytes, warnings, source -> decode<V004PlantModelTO>(bytes, warnings, source).toDomain(warnings) },
+        "0.0.5" to { bytes, warnings, source -> decode<V004PlantModelTO>(bytes, warnings, source).toDomain(warnings) },
+        "6.0.0" to { bytes, warnings, source -> decode<V7PlantModelTO>(bytes, warnings, source).toDomain() },
+        "7.0.0" to { bytes, warnings, source -> decode<V7PlantModelTO>(bytes, warnings, source).toDomain() },
     )
 
     val supported: List<String> = readers.keys.toList()
 
-    fun read(bytes: ByteArray, source: String): PlantModel {
+    fun read(bytes: ByteArray, source: String): ModelRead {
         val header = peekHeader(bytes, source)
         val reader = readers[header.version] ?: throw ModelFileException(
             "${header.where}: unsupported plant model version \"${header.version}\" (${supportedVersionsText()})",
         )
-        return reader(bytes, source)
+        val warnings = ReadWarnings(source)
+        val model = reader(SplitElements.regroup(bytes, source, warnings), warnings, source)
+        return ModelRead(model, warnings.all())
     }
 
-    private inline fun <reified T> decode(bytes: ByteArray, source: String): T =
-        decoding(source) { ModelXml.mapper.readValue(bytes, T::class.java) }
+    private inline fun <reified T> decode(bytes: ByteArray, warnings: ReadWarnings, source: String): T =
+        decoding(source) { ModelXml.mapper.readerFor(T::class.java).withHandler(warnings.handler).readValue(bytes) }
 }

@@ -29,21 +29,22 @@ class SimulationKernel(
     val services: KernelServices = koin.koin.get()
 
     init {
-        var started = false
+        execute { start() }
+    }
+
+    /** Runs [action] in the kernel context and returns once it ran, then lets [settleMillis] of virtual time pass. */
+    fun execute(settleMillis: Long = 0, action: KernelCore.() -> Unit) {
+        var done = false
         context.execute {
-            core.start()
-            started = true
+            core.action()
+            done = true
         }
-        context.runUntil { started }
+        context.runUntil { done }
+        if (settleMillis > 0) context.runUntilTime(context.elapsedMillis() + settleMillis)
     }
 
     override fun close() {
-        var stopped = false
-        context.execute {
-            core.stop()
-            stopped = true
-        }
-        context.runUntil { stopped }
+        execute { stop() }
         context.close()
         koin.close()
     }

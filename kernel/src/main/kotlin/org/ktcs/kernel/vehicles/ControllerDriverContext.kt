@@ -28,6 +28,9 @@ class ControllerDriverContext(
 
     override fun vehicle(): Vehicle = env.plant.vehicle(vehicleName)
 
+    override fun vehiclePositions(): Map<String, String> = env.plant.vehicles()
+        .mapNotNull { vehicle -> vehicle.currentPosition?.let { vehicle.name to it } }.toMap()
+
     override fun reportPosition(point: String?) = later {
         if (point != null && env.plant.staticModel().point(point) == null) {
             env.notifications.publish(
@@ -59,7 +62,10 @@ class ControllerDriverContext(
     }
 
     override fun reportLoadHandlingDevices(devices: List<LoadHandlingDevice>) = later {
+        val previous = env.plant.vehicle(vehicleName).loadHandlingDevices
         env.plant.updateVehicle(vehicleName) { it.copy(loadHandlingDevices = devices) }
+        // An emptied vehicle no longer vetoes orders that load it.
+        if (previous != devices) env.vehicleMayBeAvailable()
     }
 
     override fun commandExecuted(command: MovementCommand) = later { controller.onCommandExecuted(command) }

@@ -27,6 +27,7 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
     private var waiting: PlannedCommand? = null
     private var currentOrder: String? = null
     private var withdrawing = false
+    private var withdrawReason = ""
 
     var driver: VehicleDriver? = null
         private set
@@ -163,14 +164,18 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         if (index + 1 < order.driveOrders.size) startDriveOrder(index + 1) else endOrder(TransportOrderState.FINISHED)
     }
 
-    /** Withdraws the current order: at once ([immediate]), or after the commands already sent are carried out. */
-    fun withdraw(immediate: Boolean) {
+    /**
+     * Withdraws the current order: at once ([immediate]), or after the commands already sent are carried out.
+     * [reason] goes into the order's history, so operators see why it ended.
+     */
+    fun withdraw(immediate: Boolean, reason: String = "withdrawn") {
         val order = currentOrder ?: return
         if (env.orders.require(order).state ==
             TransportOrderState.BEING_PROCESSED
         ) {
-            env.orders.transition(order, TransportOrderState.WITHDRAWN)
+            env.orders.transition(order, TransportOrderState.WITHDRAWN, reason)
         }
+        withdrawReason = reason
         withdrawing = true
         remaining.clear()
         if (waiting != null) {
@@ -195,14 +200,44 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         // The vehicle is free before the order's final state is published: an order reserved for it may be
         // assigned right then.
         env.plant.updateVehicle(name) { it.copy(transportOrder = null).withProcState(ProcState.IDLE, env) }
-        env.orders.transition(order, state)
+        env.orders.transition(order, state, if (state == TransportOrderState.FAILED) withdrawReason else "")
+        withdrawReason = ""
+        if (state != TransportOrderState.FINISHED) warnIfStillLoaded(order)
         env.vehicleMayBeAvailable()
+    }
+
+    /** An order that ends between its load and unload leaves a load that makes the driver refuse later orders. */
+    private fun warnIfStillLoaded(order: String) {
+        if (env.plant.vehicle(name).loadHandlingDevices.none { it.full }) return
+        env.notifications.publish(
+            name,
+            NotificationLevel.NOTEWORTHY,
+            "vehicle $name still carries a load after its order $order ended unfinished; its driver may refuse " +
+                "orders that load it until the load is removed (for a simulated vehicle: reset the load in its " +
+                "panel, or send it the driver message tcs:virtualVehicle:setLoaded with value=false)",
+        )
     }
 
     /** The vehicle reported its position; outside an order that is where it holds resources. */
     fun onPositionReported(point: String?) {
+        val before = env.plant.vehicle(name).currentPosition
         val vehicle = env.plant.updateVehicle(name) { it.copy(currentPosition = point) }
-        if (currentOrder == null) occupyPosition(vehicle.integrationLevel)
+        if (currentOrder == null) occupyPosition(vehicle.integrationLevel) else checkOnRoute(point)
+        // A vehicle placed (or moved by hand) may be the one a waiting order needs.
+        if (currentOrder == null && point != before) env.vehicleMayBeAvailable()
+    }
+
+    /** A vehicle with an order reports only points of the commands it was sent; anything else is worth a look. */
+    private fun checkOnRoute(point: String?) {
+        if (!env.reportPositionOffRoute || point == null) return
+        val expected = sent.flatMap { listOfNotNull(it.command.step.sourcePoint, it.command.step.destinationPoint) }
+        if (expected.isEmpty() || point in expected) return
+        env.notifications.publish(
+            name,
+            NotificationLevel.IMPORTANT,
+            "vehicle $name reports position $point, which is not on its route (expected one of " +
+                "${expected.distinct().joinToString()})",
+        )
     }
 
     /**

@@ -20,6 +20,8 @@ class VehicleEnvironment(
     /** Called when a vehicle may have become free for work, so the dispatcher runs. */
     val vehicleMayBeAvailable: () -> Unit,
     val resourceManagement: ResourceManagement = ResourceManagement.LENGTH_RESPECTED,
+    /** Notify when a vehicle reports a point that is not on the route it was sent (openTCS's watchdog). */
+    val reportPositionOffRoute: Boolean = true,
 )
 
 /** How resources behind a vehicle are given back (openTCS: kernelapp.vehicleResourceManagementType). */

@@ -40,6 +40,9 @@ import org.ktcs.kernel.web.v1.vehicles.vehicleRoutes
 import org.ktcs.kernel.web.ws.LiveWebSockets
 import org.ktcs.kernel.web.ws.webSocketRoutes
 import org.slf4j.LoggerFactory
+import java.net.BindException
+import java.net.InetSocketAddress
+import java.net.ServerSocket
 
 /** What the web API's plugins are set to (from the `web.*` settings). */
 data class WebOptions(
@@ -82,6 +85,7 @@ class WebServer(
             webSocketBufferSize = config[KtcsSettings.webSocketBufferSize],
             allowLocalShutdown = config[KtcsSettings.webAllowLocalShutdown],
         )
+        checkPortFree(host, port)
         val module: Application.() -> Unit = { webModule(version, services, options, shutdown, contributions) }
         val tls = WebTls.from(config)
         val started = if (tls == null) {
@@ -97,6 +101,24 @@ class WebServer(
         server = started
         val bound = runBlocking { started.engine.resolvedConnectors().first().port }
         return "${if (tls == null) "http" else "https"}://$host:$bound"
+    }
+
+    /**
+     * Ktor's engine binds in a coroutine, so a port in use would surface as an uncaught stack trace without the
+     * port; trying the address first gives the user one line that names it.
+     */
+    private fun checkPortFree(host: String, port: Int) {
+        if (port == 0) return
+        try {
+            ServerSocket().use { socket ->
+                socket.reuseAddress = true
+                socket.bind(InetSocketAddress(host, port))
+            }
+        } catch (e: BindException) {
+            throw BindException(
+                "web API port $port on $host is already in use (${e.message}); set web.port to a free port",
+            )
+        }
     }
 
     fun stop() {

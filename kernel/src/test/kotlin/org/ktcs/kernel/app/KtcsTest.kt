@@ -103,6 +103,23 @@ class KtcsTest : FunSpec({
         ktcs("--set", "web.port=0", "--set", "web.bindAddress=127.0.0.1").exitCode shouldBe 0
     }
 
+    test("a web port in use stops the start with one line naming the port, exit 1") {
+        java.net.ServerSocket(0, 1, java.net.InetAddress.getByName("127.0.0.1")).use { taken ->
+            val run = ktcs("--set", "web.port=${taken.localPort}", "--set", "web.bindAddress=127.0.0.1")
+            run.exitCode shouldBe 1
+            run.err.trim() shouldStartWith
+                "ktcs: error: cannot listen on the configured address: web API port ${taken.localPort} on 127.0.0.1"
+            run.err.lines().none { it.trimStart().startsWith("at ") } shouldBe true
+        }
+    }
+
+    test("a missing model file is named without a Java exception") {
+        val missing = Files.createTempDirectory("ktcs").resolve("plant.xml")
+        val run = ktcs("--model", missing.toString())
+        run.exitCode shouldBe 1
+        run.err.trim() shouldBe "ktcs: error: $missing: cannot read the file: no such file"
+    }
+
     test("usage mistakes exit 2 with the usage text") {
         val run = ktcs("--frobnicate")
         run.exitCode shouldBe 2

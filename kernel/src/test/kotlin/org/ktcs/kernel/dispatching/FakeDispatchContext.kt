@@ -106,6 +106,13 @@ class FakeDispatchContext(var model: PlantModel) : DispatchContext {
         return order
     }
 
+    /** The latest reason per vehicle, as [vehicleWaiting] gave it. */
+    val vehicleReasons = HashMap<String, String?>()
+
+    override fun vehicleWaiting(vehicle: String, reason: String?) {
+        vehicleReasons[vehicle] = reason
+    }
+
     override fun deferred(order: String, reason: String) {
         deferrals += order to reason
     }

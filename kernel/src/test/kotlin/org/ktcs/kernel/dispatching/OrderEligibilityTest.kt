@@ -51,7 +51,7 @@ class OrderEligibilityTest : FunSpec({
         }
     }
 
-    test("an order intended for a vehicle goes to that vehicle only, and waits quietly while it is busy") {
+    test("an order intended for a vehicle goes to that vehicle only, and says so while it is busy") {
         val context = FakeDispatchContext(plant())
         context.add(vehicle("V1", at = "E"), vehicle("V2", at = "A", energy = 10).processing("X"))
         context.add(order("X", state = TransportOrderState.BEING_PROCESSED), order("T1", intended = "V2"))
@@ -59,7 +59,7 @@ class OrderEligibilityTest : FunSpec({
         context.dispatch()
 
         context.assignments.shouldBeEmpty()
-        context.deferrals.shouldBeEmpty()
+        context.deferralsOf("T1") shouldContainExactly listOf("intended vehicle V2: processing order X")
     }
 
     test("an order to a locked location waits, saying so") {

@@ -1,7 +1,9 @@
 package org.ktcs.kernel.persistence
 
+import io.kotest.assertions.withClue
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
 import org.ktcs.api.model.BlockLayout
 import org.ktcs.api.model.ConnectionType
 import org.ktcs.api.model.Couple
@@ -9,6 +11,7 @@ import org.ktcs.api.model.LocationRepresentation
 import org.ktcs.api.model.PlantModel
 import org.ktcs.kernel.persistence.PersistenceFixtures.DEMO_5_0
 import org.ktcs.kernel.persistence.PersistenceFixtures.DEMO_HEAD
+import kotlin.math.hypot
 
 /** openTCS's demo plant as shipped with 7.5 (7.0.0) and with 5.0 (0.0.3). */
 class DemoModelsTest : FunSpec({
@@ -38,5 +41,30 @@ class DemoModelsTest : FunSpec({
         model.locationType("Recharge station")!!.layout.locationRepresentation shouldBe
             LocationRepresentation.RECHARGE_GENERIC
         model.visualLayout.name shouldBe "VLayout-01"
+    }
+
+    test("the 5.0 demo's points are drawn where openTCS drew them, with a warning naming the discrepancy") {
+        val read = PlantModelFiles.readWithWarnings(PersistenceFixtures.path(DEMO_5_0))
+        val point = read.model.point("Point-0001")!!.pose.position
+        (point.x to point.y) shouldBe (28000L to 11000L)
+        read.model.location("Goods in north 01")!!.position.x shouldBe -28000
+        read.warnings.map { it.message }.single { "drawn" in it } shouldContain
+            "point 'Point-0001' model (53288,-3893) drawn (28000,11000)"
+    }
+
+    test("the 5.0 demo's paths join their points: every control point lies near its path's ends") {
+        val model = demo(DEMO_5_0)
+        val scale = model.visualLayout.scaleX
+        model.paths.filter { it.layout.controlPoints.isNotEmpty() }.forEach { path ->
+            val ends = listOf(path.sourcePoint, path.destinationPoint).map { model.point(it)!!.pose.position }
+            path.layout.controlPoints.forEach { control ->
+                val distance = ends.minOf { hypot(control.x * scale - it.x, -control.y * scale - it.y) }
+                withClue(path.name) { (distance < 10_000.0) shouldBe true }
+            }
+        }
+    }
+
+    test("the 7.5 demo reads without warnings") {
+        PlantModelFiles.readWithWarnings(PersistenceFixtures.path(DEMO_HEAD)).warnings shouldBe emptyList()
     }
 })

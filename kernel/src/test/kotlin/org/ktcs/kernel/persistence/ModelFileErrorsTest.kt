@@ -122,7 +122,7 @@ class ModelFileErrorsTest : FunSpec({
     test("a missing file is named") {
         val missing = File(tempdir(), "nowhere.xml").toPath()
         shouldThrow<ModelFileException> { PlantModelFiles.read(missing) }.message shouldBe
-            "$missing: cannot read the file: NoSuchFileException: $missing"
+            "$missing: cannot read the file: no such file"
     }
 
     test("errors in a file name the file") {

@@ -81,6 +81,23 @@ class WebApiTest : FunSpec({
         }
     }
 
+    test("the documented request examples (Swagger UI's Try it out) work against the demo plant") {
+        val (application, base) = start()
+        try {
+            val paths = json(call("GET", "$base/openapi.json")).jsonObject["paths"]!!.jsonObject
+            fun example(path: String, method: String) = paths[path]!!.jsonObject[method]!!.jsonObject["requestBody"]!!
+                .jsonObject["content"]!!.jsonObject["application/json"]!!.jsonObject["example"]!!.toString()
+            call("POST", "$base/transportOrders/TOrder-002", example("/transportOrders/{NAME}", "post"))
+                .statusCode() shouldBe 200
+            call("POST", "$base/orderSequences/OrderSequence-01", example("/orderSequences/{NAME}", "post"))
+                .statusCode() shouldBe 200
+            call("POST", "$base/plantModel/topologyUpdateRequest", example("/plantModel/topologyUpdateRequest", "post"))
+                .statusCode() shouldBe 200
+        } finally {
+            application.stop()
+        }
+    }
+
     test("bad input is answered 400 with a message naming the problem, unknown objects 404") {
         val (application, base) = start()
         try {

@@ -2,6 +2,7 @@
 // refresh live; the actions stay put, so typing is never interrupted.
 
 import { el, fill, formatTime, propertyTable } from './dom.js';
+import { outcomeOf } from './orders-view.js';
 import { act, enc } from './actions.js';
 import { vehicleActions } from './vehicle-actions.js';
 
@@ -103,6 +104,7 @@ export class Details {
     }
     if (kind === 'vehicle') return vehicleActions(this.ktcs, name, this.objectOf({ kind, name })?.integrationLevel);
     if (kind === 'order') {
+      if (FINAL.has(this.objectOf({ kind, name })?.state)) return [];
       const withdraw = (immediate) => act(this.ktcs, `Withdraw ${name}${immediate ? ' immediately' : ''}`,
         () => this.ktcs.api('POST', `/transportOrders/${enc(name)}/withdrawal?immediate=${immediate}`));
       return [
@@ -125,7 +127,7 @@ function properties(list) {
 }
 
 function resources(sets) {
-  const names = (sets ?? []).flat();
+  const names = [...new Set((sets ?? []).flat())];
   return names.length === 0 ? '—' : names.join(', ');
 }
 
@@ -133,6 +135,7 @@ function vehicleFacts(vehicle) {
   const pose = vehicle.pose?.position;
   return [propertyTable([
     ['State', vehicle.state?.state], ['Processing', vehicle.procState?.procState],
+    ...(vehicle.waitingReason ? [['Takes no orders because', vehicle.waitingReason]] : []),
     ['Integration', vehicle.integrationLevel], ['Paused', vehicle.paused ? 'yes' : 'no'],
     ['Energy', `${vehicle.energyLevel}%`], ['Position', vehicle.currentPosition ?? '—'],
     ['Precise position', pose ? `${pose.x}, ${pose.y} mm` : '—'],
@@ -143,10 +146,15 @@ function vehicleFacts(vehicle) {
   ]), properties(vehicle.properties)];
 }
 
+const FINAL = new Set(['FINISHED', 'FAILED', 'UNROUTABLE', 'WITHDRAWN']);
+
 function orderFacts(order) {
+  const final = FINAL.has(order.state);
+  const why = order.waitingReason ? [['Waiting because', order.waitingReason]]
+    : outcomeOf(order) ? [['Reason', outcomeOf(order)]] : [];
   return [
     propertyTable([
-      ['State', order.state], ['Vehicle', order.processingVehicle ?? '—'],
+      ['State', order.state], ...why, ['Vehicle', order.processingVehicle ?? '—'],
       ['Intended vehicle', order.intendedVehicle ?? '—'], ['Type', order.type],
       ['Created', formatTime(order.creationTime)], ['Deadline', formatTime(order.deadline)],
       ['Finished', formatTime(order.finishedTime)], ['Sequence', order.wrappingSequence ?? '—'],
@@ -159,7 +167,7 @@ function orderFacts(order) {
       el('span', { className: `state ${driveOrder.state}` }, driveOrder.state)),
     el('div', { className: 'route' }, driveOrder.route
       ? `Route: ${driveOrder.route.steps.map((s) => s.destinationPoint).join(' → ')} (costs ${driveOrder.route.costs})`
-      : 'Route: not yet computed')))),
+      : (final ? 'Route: none (the order ended before it was routed)' : 'Route: not yet computed'))))),
     properties(order.properties),
   ];
 }

@@ -49,12 +49,21 @@ export class OrdersView {
     this.count.textContent = `${orders.length} order${orders.length === 1 ? '' : 's'}`;
     const now = Date.now();
     fill(this.body, orders.slice(0, SHOWN).map((order) => el('tr', { 'data-order': order.name },
-    el('td', {}, order.name),
-    el('td', { 'data-column': 'state' }, el('span', { className: `state ${order.state}` }, order.state)),
-    el('td', {}, order.processingVehicle ?? (order.intendedVehicle ? `(${order.intendedVehicle})` : '—')),
-    el('td', {}, destinations(order)),
+    el('td', { className: 'name', title: order.name }, order.name),
+    el('td', { 'data-column': 'state', title: order.waitingReason ?? outcomeOf(order) ?? undefined },
+      el('span', { className: `state ${order.state}` }, order.state)),
+    el('td', { className: 'nowrap' }, order.processingVehicle ?? (order.intendedVehicle ? `(${order.intendedVehicle})` : '—')),
+    el('td', { className: 'wrap' }, destinations(order)),
     el('td', {}, formatDuration(ageOf(order, now))))));
   }
+}
+
+/** Why a final order ended as it did, from its last history entry that says so (e.g. an UNROUTABLE order). */
+export function outcomeOf(order) {
+  if (!FINAL.has(order.state) || order.state === 'FINISHED') return null;
+  const entries = order.history?.entries ?? [];
+  const last = entries.filter((e) => (e.supplements ?? []).length > 0 && e.eventCode !== 'tcs:history:orderDispatchingDeferred').at(-1);
+  return last ? last.supplements.join('; ') : null;
 }
 
 function destinations(order) {

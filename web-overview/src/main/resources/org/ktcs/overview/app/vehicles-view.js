@@ -20,7 +20,7 @@ export class VehiclesView {
   render() {
     const vehicles = this.client.objects('vehicles').sort((a, b) => a.name.localeCompare(b.name));
     fill(this.body, vehicles.map((vehicle) => el('tr', { 'data-vehicle': vehicle.name },
-    el('td', {}, vehicle.name, vehicle.paused ? el('span', { className: 'tag' }, 'paused') : null),
+    el('td', { className: 'nowrap' }, vehicle.name, vehicle.paused ? el('span', { className: 'tag' }, 'paused') : null),
     el('td', {}, el('span', { className: `state ${vehicle.state?.state}` }, vehicle.state?.state)),
     el('td', {}, vehicle.procState?.procState),
     el('td', {}, vehicle.integrationLevel.replace('TO_BE_', '').toLowerCase()),

@@ -8,8 +8,10 @@ import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.PointLayout
 import org.ktcs.api.model.VisualLayout
 import org.ktcs.kernel.persistence.ModelFileException
+import org.ktcs.kernel.persistence.ReadWarnings
 import org.ktcs.kernel.persistence.toMap
 import org.ktcs.kernel.persistence.v004.BlockTO
+import org.ktcs.kernel.persistence.v004.DrawnPositions
 import org.ktcs.kernel.persistence.v004.LegacyLayouts
 import org.ktcs.kernel.persistence.v004.LegacyPlantModelTO
 import org.ktcs.kernel.persistence.v004.LocationTO
@@ -23,15 +25,16 @@ import org.ktcs.kernel.persistence.v004.toDomain
  * [LegacyPlantModelTO.toDomain]). Element layouts come from the first visual layout's
  * `modelLayoutElement` properties: `LABEL_OFFSET_X`/`_Y` (default 0), `CONN_TYPE` (default DIRECT), `CONTROL_POINTS`
  * (`x,y;x,y`), `ROUTE_COLOR` and block `COLOR` (default red). Every element is on the default layer, and the visual
- * layout gets the default layer and layer group.
+ * layout gets the default layer and layer group. Layout positions (`POSITION_X`/`_Y`) that differ from the model
+ * positions win (see [DrawnPositions]).
  *
  * Dropped, having no place in 7.0.0: the 4.x concepts `vehicleType`, `staticRoute` and `group`; path `routingCost`
  * and the per-vehicle-type `typeMaxVelocity`, `typeMaxReverseVelocity`, `typeLock` and `typeActions`; vehicle `type`;
- * location type `locationNamePrefix`; the `id` attributes; the layout positions (`POSITION_X`/`_Y`) and `layer`
- * numbers of model layout elements; shape layout elements, view bookmarks and colours of the visual layout; every
+ * location type `locationNamePrefix`; the `id` attributes; the `layer` numbers of model layout elements; shape layout elements, view bookmarks and colours of the visual layout; every
  * visual layout after the first.
  */
-internal fun V002PlantModelTO.toDomain(source: String): PlantModel = toDomain(ModelLayoutElements(visualLayout, source))
+internal fun V002PlantModelTO.toDomain(source: String, warnings: ReadWarnings): PlantModel =
+    toDomain(ModelLayoutElements(visualLayout, source), warnings)
 
 private class ModelLayoutElements(layouts: List<V002VisualLayoutTO>, private val source: String) : LegacyLayouts {
     private val first = layouts.firstOrNull()
@@ -54,6 +57,16 @@ private class ModelLayoutElements(layouts: List<V002VisualLayoutTO>, private val
     override fun location(to: LocationTO) = LocationLayout(labelOffset(to.name))
 
     override fun blockColor(to: BlockTO) = color(to.name, "COLOR")
+
+    override fun drawnPosition(to: PointTO) = drawnPosition(to.name)
+
+    override fun drawnPosition(to: LocationTO) = drawnPosition(to.name)
+
+    private fun drawnPosition(name: String): Couple? {
+        val properties = byName[name] ?: return null
+        if ("POSITION_X" !in properties || "POSITION_Y" !in properties) return null
+        return Couple(number(name, "POSITION_X"), number(name, "POSITION_Y"))
+    }
 
     override fun visualLayout(): VisualLayout =
         first?.let { VisualLayout(it.name, it.scaleX, it.scaleY, properties = it.property.toMap()) } ?: VisualLayout()

@@ -8,15 +8,18 @@ import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.PointLayout
 import org.ktcs.api.model.VehicleLayout
 import org.ktcs.api.model.VisualLayout
+import org.ktcs.kernel.persistence.ReadWarnings
 import org.ktcs.kernel.persistence.v7.toCouples
 import org.ktcs.kernel.persistence.v7.toDomain
 
 /**
- * Converts a 0.0.4 or 0.0.5 file as described at [LegacyPlantModelTO.toDomain]. Dropped, having no place in 7.0.0:
- * the layout positions of points and locations (`pointLayout`/`locationLayout` `xPosition`, `yPosition`).
+ * Converts a 0.0.4 or 0.0.5 file as described at [LegacyPlantModelTO.toDomain]. The layout positions of points and
+ * locations (`pointLayout`/`locationLayout` `xPosition`, `yPosition`) win where they differ from the model positions
+ * (see [DrawnPositions]).
  */
-internal fun V004PlantModelTO.toDomain(): PlantModel = toDomain(
+internal fun V004PlantModelTO.toDomain(warnings: ReadWarnings): PlantModel = toDomain(
     ElementLayouts(visualLayout?.toDomain() ?: VisualLayout()),
+    warnings,
 )
 
 /** 0.0.4 and 0.0.5 keep each element's layout in a child element, as 7.0.0 does. */
@@ -38,4 +41,8 @@ private class ElementLayouts(private val visualLayout: VisualLayout) : LegacyLay
     override fun blockColor(to: BlockTO) = to.blockLayout?.color ?: BlockLayout().color
 
     override fun visualLayout() = visualLayout
+
+    override fun drawnPosition(to: PointTO) = to.pointLayout?.let { Couple(it.xPosition, it.yPosition) }
+
+    override fun drawnPosition(to: LocationTO) = to.locationLayout?.let { Couple(it.xPosition, it.yPosition) }
 }

@@ -4,6 +4,7 @@ import org.ktcs.api.model.Block
 import org.ktcs.api.model.BlockLayout
 import org.ktcs.api.model.BlockType
 import org.ktcs.api.model.BoundingBox
+import org.ktcs.api.model.Couple
 import org.ktcs.api.model.EnergyLevelThresholdSet
 import org.ktcs.api.model.ExecutionTrigger
 import org.ktcs.api.model.Location
@@ -22,6 +23,7 @@ import org.ktcs.api.model.Pose
 import org.ktcs.api.model.Position
 import org.ktcs.api.model.Vehicle
 import org.ktcs.api.model.VisualLayout
+import org.ktcs.kernel.persistence.ReadWarnings
 import org.ktcs.kernel.persistence.toMap
 import org.ktcs.kernel.persistence.v7.LocationTypeTO
 import org.ktcs.kernel.persistence.v7.toDomain
@@ -39,6 +41,12 @@ internal interface LegacyLayouts {
     fun blockColor(to: BlockTO): String
 
     fun visualLayout(): VisualLayout
+
+    /** Where openTCS's plant overview drew the point, if the file says so apart from its model position. */
+    fun drawnPosition(to: PointTO): Couple?
+
+    /** Where openTCS's plant overview drew the location, if the file says so apart from its model position. */
+    fun drawnPosition(to: LocationTO): Couple?
 }
 
 /**
@@ -51,7 +59,17 @@ internal interface LegacyLayouts {
  *   kTCS falls back to the layout element when the property is missing or names no symbol;
  * - missing optional attributes get the domain defaults (z 0, orientation NaN, path length 1, …).
  */
-internal fun LegacyPlantModelTO.toDomain(layouts: LegacyLayouts): PlantModel = PlantModel(
+internal fun LegacyPlantModelTO.toDomain(layouts: LegacyLayouts, warnings: ReadWarnings): PlantModel {
+    val drawn = DrawnPositions(layouts, warnings)
+    return toDomain(layouts).let { model ->
+        model.copy(
+            points = model.points.zip(point) { domain, to -> drawn.point(domain, to) },
+            locations = model.locations.zip(location) { domain, to -> drawn.location(domain, to) },
+        ).also { drawn.report() }
+    }
+}
+
+private fun LegacyPlantModelTO.toDomain(layouts: LegacyLayouts): PlantModel = PlantModel(
     name = name,
     points = point.map { it.toDomain(layouts.point(it)) },
     paths = path.map { it.toDomain(layouts.path(it)) },

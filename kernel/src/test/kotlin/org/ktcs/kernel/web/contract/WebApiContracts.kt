@@ -26,14 +26,15 @@ object WebApiContracts {
                 listOf(Violation("kTCS: $method $path", null, "is not in kTCS's document, yet answered $status"))
             }
         val theirs = openTcs.template(method, path)?.takeIf { openTcs.describes(method, it, status) }
-        val openTcsViolations = theirs?.let { openTcs.violations(method, it, status, contentType, body) }.orEmpty()
+        val openTcsViolations =
+            theirs?.let { openTcs.violations(method, it, status, contentType, KtcsFields.strip(body)) }.orEmpty()
         return ktcs.violations(method, own, status, contentType, body) +
             OpenTcsSpecDefects.unexcused(openTcsViolations)
     }
 
     /** The violations of [json] against openTCS's schema at [pointer] of [file] (a path under the spec's folder). */
     fun openTcsSchemaViolations(file: String, pointer: String, json: String): List<Violation> =
-        OpenTcsSpecDefects.unexcused(openTcs.violationsOf("$OPEN_TCS_FOLDER/$file", pointer, json))
+        OpenTcsSpecDefects.unexcused(openTcs.violationsOf("$OPEN_TCS_FOLDER/$file", pointer, KtcsFields.strip(json)))
 
     /** Fails the test with every violation of the response, naming operation, JSON pointer and message. */
     fun check(method: String, url: String, status: Int, contentType: String?, body: String) {

@@ -17,8 +17,8 @@ export default {
       ]));
       const byResource = new Map();
       const note = (resource, column, vehicle) => {
-        if (!byResource.has(resource)) byResource.set(resource, [[], []]);
-        byResource.get(resource)[column].push(vehicle);
+        if (!byResource.has(resource)) byResource.set(resource, [new Set(), new Set()]);
+        byResource.get(resource)[column].add(vehicle);
       };
       for (const vehicle of sorted) {
         (vehicle.allocatedResources ?? []).flat().forEach((resource) => note(resource, 0, vehicle.name));
@@ -26,7 +26,7 @@ export default {
       }
       rows(container.querySelector('[data-role=resources] tbody'), [...byResource.entries()]
         .sort(([a], [b]) => a.localeCompare(b))
-        .map(([resource, [allocated, claimed]]) => [resource, allocated.join(', ') || '—', claimed.join(', ') || '—']));
+        .map(([resource, [allocated, claimed]]) => [resource, listed(allocated), listed(claimed)]));
     };
     let scheduled = false;
     return ktcs.subscribe('vehicles', (message) => {
@@ -45,9 +45,14 @@ export default {
   },
 };
 
+// A vehicle's resource sets repeat a point in consecutive sets (the point it stands on ends one step and starts the
+// next); each resource is listed once.
 function names(resourceSets) {
-  const all = (resourceSets ?? []).flat();
-  return all.length === 0 ? '—' : all.join(', ');
+  return listed(new Set((resourceSets ?? []).flat()));
+}
+
+function listed(set) {
+  return set.size === 0 ? '—' : [...set].join(', ');
 }
 
 function rows(body, cells) {

@@ -35,13 +35,17 @@ export default {
       }
     }, 1000);
     const render = () => {
-      const finished = [...orders.values()].filter((o) => o.state === 'FINISHED');
-      const failed = [...orders.values()].filter((o) => o.state === 'FAILED' || o.state === 'UNROUTABLE').length;
+      // Park and recharge orders (dispensable) are the kernel's own: one replaced by real work is no failure.
+      const work = [...orders.values()].filter((o) => !o.dispensable);
+      const own = orders.size - work.length;
+      const finished = work.filter((o) => o.state === 'FINISHED');
+      const failed = work.filter((o) => o.state === 'FAILED' || o.state === 'UNROUTABLE').length;
       const durations = finished.map((o) => (Date.parse(o.finishedTime) - Date.parse(o.creationTime)) / 1000)
         .filter((d) => Number.isFinite(d) && d >= 0);
       const average = durations.length ? durations.reduce((a, b) => a + b, 0) / durations.length : 0;
       part('totals').textContent = `Finished: ${finished.length} · failed: ${failed} · ` +
-        `open: ${orders.size - finished.length - failed} · mean duration: ${average.toFixed(1)} s`;
+        `open: ${work.length - finished.length - failed} · mean duration: ${average.toFixed(1)} s · ` +
+        `park/recharge orders (not counted): ${own}`;
       part('per-minute').replaceChildren(barChart(perMinute(finished)));
       const recent = finished.sort((a, b) => Date.parse(a.finishedTime) - Date.parse(b.finishedTime)).slice(-DURATIONS_SHOWN);
       part('durations').replaceChildren(barChart(recent.map((o, i) => ({

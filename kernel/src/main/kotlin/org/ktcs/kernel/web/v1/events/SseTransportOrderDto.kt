@@ -1,8 +1,11 @@
 package org.ktcs.kernel.web.v1.events
 
+import kotlinx.serialization.EncodeDefault
+import kotlinx.serialization.ExperimentalSerializationApi
 import kotlinx.serialization.Serializable
 import org.ktcs.api.order.DriveOrder
 import org.ktcs.api.order.TransportOrder
+import org.ktcs.kernel.orders.waitingReason
 import org.ktcs.kernel.web.v1.ObjectHistoryDto
 import org.ktcs.kernel.web.v1.orders.RouteDto
 import org.ktcs.kernel.web.v1.orders.orMaxInstant
@@ -11,6 +14,7 @@ import org.ktcs.kernel.web.v1.toDto
 import org.ktcs.kernel.web.v1.toWire
 
 /** A transport order in an SSE event. Here v1 writes properties as a JSON object and lists no destination states. */
+@OptIn(ExperimentalSerializationApi::class)
 @Serializable
 data class SseTransportOrderDto(
     val name: String,
@@ -30,6 +34,9 @@ data class SseTransportOrderDto(
     val processingVehicle: String?,
     val wrappingSequence: String?,
     val dispensable: Boolean,
+    /** kTCS only (see [waitingReason]); left out of the JSON when `null`, so openTCS clients see v1's fields. */
+    @EncodeDefault(EncodeDefault.Mode.NEVER)
+    val waitingReason: String? = null,
 )
 
 @Serializable
@@ -62,6 +69,7 @@ fun TransportOrder.toSseDto(): SseTransportOrderDto = SseTransportOrderDto(
     processingVehicle = processingVehicle,
     wrappingSequence = wrappingSequence,
     dispensable = dispensable,
+    waitingReason = waitingReason(),
 )
 
 private fun DriveOrder.toSseDto(order: String) = SseDriveOrderDto(

@@ -1,5 +1,7 @@
 package org.ktcs.kernel.web.v1.events
 
+import kotlinx.serialization.EncodeDefault
+import kotlinx.serialization.ExperimentalSerializationApi
 import kotlinx.serialization.Serializable
 import org.ktcs.api.model.Vehicle
 import org.ktcs.api.order.HistoryEntry
@@ -13,6 +15,7 @@ import org.ktcs.kernel.web.v1.toWire
 import org.ktcs.kernel.web.v1.vehicles.toDto
 
 /** A vehicle in an SSE event: openTCS's full vehicle object, with state and proc state carrying their timestamps. */
+@OptIn(ExperimentalSerializationApi::class)
 @Serializable
 data class SseVehicleDto(
     val name: String,
@@ -38,6 +41,9 @@ data class SseVehicleDto(
     val pose: SsePoseDto,
     val envelopeKey: String?,
     val layout: SseVehicleLayoutDto,
+    /** kTCS only: why the vehicle takes no orders; left out of the JSON when `null`, as in openTCS. */
+    @EncodeDefault(EncodeDefault.Mode.NEVER)
+    val waitingReason: String? = null,
 )
 
 @Serializable
@@ -96,6 +102,7 @@ fun Vehicle.toSseDto(): SseVehicleDto = SseVehicleDto(
     pose = SsePoseDto(precisePosition?.toDto(), orientationAngle),
     envelopeKey = envelopeKey,
     layout = SseVehicleLayoutDto(parseColor(layout.routeColor)),
+    waitingReason = waitingReason,
 )
 
 /** `#RRGGBB` as its components. */

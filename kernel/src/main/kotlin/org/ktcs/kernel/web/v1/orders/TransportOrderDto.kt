@@ -1,9 +1,12 @@
 package org.ktcs.kernel.web.v1.orders
 
+import kotlinx.serialization.EncodeDefault
+import kotlinx.serialization.ExperimentalSerializationApi
 import kotlinx.serialization.Serializable
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.DriveOrder
 import org.ktcs.api.order.TransportOrder
+import org.ktcs.kernel.orders.waitingReason
 import org.ktcs.kernel.web.v1.ObjectHistoryDto
 import org.ktcs.kernel.web.v1.PropertyDto
 import org.ktcs.kernel.web.v1.toDto
@@ -12,6 +15,7 @@ import org.ktcs.kernel.web.v1.toWire
 import java.time.Instant
 
 /** A transport order as `GET /transportOrders/{NAME}` answers it. */
+@OptIn(ExperimentalSerializationApi::class)
 @Serializable
 data class TransportOrderDto(
     val dispensable: Boolean,
@@ -32,6 +36,9 @@ data class TransportOrderDto(
     val processingVehicle: String?,
     val destinations: List<DestinationStateDto>,
     val properties: List<PropertyDto>,
+    /** kTCS only (see [waitingReason]); left out of the JSON when `null`, so openTCS clients see v1's fields. */
+    @EncodeDefault(EncodeDefault.Mode.NEVER)
+    val waitingReason: String? = null,
 )
 
 /** One destination's progress, as v1 lists them beside the full drive orders. */
@@ -77,6 +84,7 @@ fun TransportOrder.toDto(): TransportOrderDto = TransportOrderDto(
     processingVehicle = processingVehicle,
     destinations = driveOrders.map { it.toDestinationState() },
     properties = properties.toPropertyDtos(),
+    waitingReason = waitingReason(),
 )
 
 fun DriveOrder.toDestinationState(): DestinationStateDto =

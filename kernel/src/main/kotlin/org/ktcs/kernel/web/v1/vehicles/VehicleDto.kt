@@ -1,5 +1,7 @@
 package org.ktcs.kernel.web.v1.vehicles
 
+import kotlinx.serialization.EncodeDefault
+import kotlinx.serialization.ExperimentalSerializationApi
 import kotlinx.serialization.Serializable
 import org.ktcs.api.model.AcceptableOrderType
 import org.ktcs.api.model.Vehicle
@@ -14,6 +16,7 @@ import org.ktcs.kernel.web.v1.toWire
  * A vehicle as `GET /vehicles/{NAME}` answers it. Unlike orders, v1 writes a vehicle's properties as a JSON object;
  * [length] repeats the bounding box's length (deprecated in openTCS).
  */
+@OptIn(ExperimentalSerializationApi::class)
 @Serializable
 data class VehicleDto(
     val name: String,
@@ -40,6 +43,9 @@ data class VehicleDto(
     val allowedOrderTypes: List<String>,
     val acceptableOrderTypes: List<AcceptableOrderTypeDto>,
     val envelopeKey: String?,
+    /** kTCS only: why the vehicle takes no orders; left out of the JSON when `null`, as in openTCS. */
+    @EncodeDefault(EncodeDefault.Mode.NEVER)
+    val waitingReason: String? = null,
 )
 
 fun Vehicle.toDto(): VehicleDto = VehicleDto(
@@ -67,6 +73,7 @@ fun Vehicle.toDto(): VehicleDto = VehicleDto(
     allowedOrderTypes = allowedOrderTypes.toList(),
     acceptableOrderTypes = acceptableOrderTypes.map { it.toDto() },
     envelopeKey = envelopeKey,
+    waitingReason = waitingReason,
 )
 
 fun AcceptableOrderType.toDto(): AcceptableOrderTypeDto = AcceptableOrderTypeDto(name, priority)

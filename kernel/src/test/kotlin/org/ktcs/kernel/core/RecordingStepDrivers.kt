@@ -1,0 +1,25 @@
+package org.ktcs.kernel.core
+
+import org.koin.core.module.Module
+import org.koin.dsl.bind
+import org.koin.dsl.module
+import org.ktcs.api.driver.DriverContext
+import org.ktcs.api.driver.VehicleDriver
+import org.ktcs.api.driver.VehicleDriverFactory
+
+/** [StepDriver]s that keep each vehicle's [DriverContext], so a test can report for a vehicle as its driver would. */
+class RecordingStepDrivers {
+    val contexts = mutableMapOf<String, DriverContext>()
+
+    val module: Module = module {
+        single {
+            object : VehicleDriverFactory {
+                override val name = "step"
+                override val description = "test vehicle that drives at 1 m/s"
+
+                override fun create(vehicleName: String, context: DriverContext): VehicleDriver =
+                    StepDriver(vehicleName, context).also { contexts[vehicleName] = context }
+            }
+        } bind VehicleDriverFactory::class
+    }
+}

@@ -1,0 +1,90 @@
+package org.ktcs.kernel.dispatching
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.shouldBe
+import org.ktcs.api.order.Destination
+import org.ktcs.api.order.TransportOrderCreation
+import org.ktcs.kernel.app.PlantModelLoader
+import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.core.KernelCore
+import org.ktcs.kernel.core.RecordingStepDrivers
+import org.ktcs.kernel.simulation.SimulationKernel
+import org.ktcs.kernel.web.v1.orders.toDto
+
+/** Every DISPATCHABLE order says why it waits (kTCS's waitingReason), and stops saying it once it no longer holds. */
+class WaitingReasonTest : FunSpec({
+    val config = ConfigLoader().load(
+        null,
+        emptyMap(),
+        listOf("dispatcher.parkIdleVehicles=false", "dispatcher.rechargeIdleVehicles=false"),
+    )
+    val drivers = RecordingStepDrivers()
+    val demo = PlantModelLoader.loadDemo().model
+    val trip = listOf(Destination("Goods in north 01", "Load cargo"), Destination("Goods out 02", "Unload cargo"))
+
+    fun SimulationKernel.now(action: KernelCore.() -> Unit) = execute(settleMillis = 50, action)
+
+    fun SimulationKernel.reason(order: String) = core.orders.require(order).toDto().waitingReason
+
+    fun SimulationKernel.order(name: String, vehicle: String? = null) =
+        now { createTransportOrder(TransportOrderCreation(name, trip, intendedVehicle = vehicle)) }
+
+    test("no vehicle with a known position: said, and gone once one has a position") {
+        val unplaced = demo.copy(vehicles = demo.vehicles.map { it.copy(properties = emptyMap()) })
+        SimulationKernel(unplaced, config, listOf(drivers.module)).use { kernel ->
+            kernel.order("T")
+            kernel.reason("T") shouldBe "no vehicle is available: position unknown"
+            kernel.now { drivers.contexts.getValue("Vehicle-01").reportPosition("Point-0001") }
+            kernel.reason("T") shouldBe null
+        }
+    }
+
+    test("a paused intended vehicle: said, and gone once it is resumed") {
+        SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
+            kernel.now { kernel.core.controllers.setPaused("Vehicle-02", true) }
+            kernel.order("T", vehicle = "Vehicle-02")
+            kernel.reason("T") shouldBe "intended vehicle Vehicle-02: paused"
+            kernel.core.plant.vehicle("Vehicle-02").waitingReason shouldBe "paused"
+            kernel.now { kernel.core.controllers.setPaused("Vehicle-02", false) }
+            kernel.reason("T") shouldBe null
+            kernel.core.plant.vehicle("Vehicle-02").waitingReason shouldBe null
+        }
+    }
+
+    test("every vehicle busy: says with which order, and gone once one is free") {
+        SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
+            listOf("A", "B", "C", "D").forEachIndexed { i, name -> kernel.order(name, vehicle = "Vehicle-0${i + 1}") }
+            kernel.order("E")
+            kernel.reason("E") shouldBe "vehicle Vehicle-01: processing order A; vehicle Vehicle-02: processing " +
+                "order B; vehicle Vehicle-03: processing order C; and 1 more vehicles"
+            kernel.context.runUntil { kernel.core.orders.require("E").state.name != "DISPATCHABLE" }
+            kernel.reason("E") shouldBe null
+        }
+    }
+
+    test("a locked destination: said, and gone once it is unlocked") {
+        SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
+            kernel.now { kernel.core.plant.setLocationLocked("Goods out 02", true) }
+            kernel.order("T")
+            kernel.reason("T") shouldBe "target location Goods out 02 is locked"
+            kernel.now {
+                kernel.core.plant.setLocationLocked("Goods out 02", false)
+                kernel.core.dispatch()
+            }
+            kernel.reason("T") shouldBe null
+        }
+    }
+
+    test("each change of reason is one history entry") {
+        SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
+            kernel.now { kernel.core.controllers.setPaused("Vehicle-02", true) }
+            kernel.order("T", vehicle = "Vehicle-02")
+            kernel.now { kernel.core.dispatch() }
+            kernel.now { kernel.core.plant.setLocationLocked("Goods out 02", true) }
+            kernel.now { kernel.core.dispatch() }
+            kernel.core.orders.require("T").history.filter { it.eventCode == "tcs:history:orderDispatchingDeferred" }
+                .map { it.supplement } shouldBe
+                listOf("intended vehicle Vehicle-02: paused", "target location Goods out 02 is locked")
+        }
+    }
+})
