@@ -1,5 +1,6 @@
 package org.ktcs.kernel.app
 
+import org.ktcs.kernel.bench.Bench
 import org.ktcs.kernel.config.ConfigException
 import org.ktcs.kernel.config.ConfigFile
 import org.ktcs.kernel.config.ConfigLoader
@@ -29,6 +30,8 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
             is Command.Simulate -> simulate(command.options)
             is Command.CheckModel -> ModelTools(out).check(command.file)
             is Command.ConvertModel -> ModelTools(out).convert(command.input, command.output)
+            is Command.Bench -> Bench(command.options, out, err).run()
+            Command.BenchHelp -> 0.also { out.println(CommandLine.benchUsage) }
             Command.Help -> 0.also { out.println(CommandLine.usage) }
             Command.Version -> 0.also { out.println("kTCS ${KernelVersion.ofThisBuild().version}") }
         }

@@ -1,0 +1,55 @@
+package org.ktcs.kernel.bench
+
+import org.ktcs.kernel.app.PlantModelLoader
+import org.ktcs.api.model.PlantModel
+import org.ktcs.kernel.persistence.PlantModelFiles
+import org.ktcs.kernel.simulation.Fleet
+import java.io.File
+import java.nio.file.Files
+import java.nio.file.Path
+import java.io.PrintStream
+
+/**
+ * `ktcs bench`: drives a kTCS through its web API v1 like an external client and prints one `name: value` line per
+ * figure (median, min and max over the runs). Each run starts a fresh kTCS unless [BenchOptions.url] names one.
+ */
+class Bench(private val options: BenchOptions, private val out: PrintStream, private val err: PrintStream) {
+    fun run(): Int {
+        val loaded = PlantModelLoader.load(options.model).model
+        // A started kTCS gets the fleet asked for, each vehicle on a point of its own, as `ktcs simulate` places them.
+        val model = if (options.url == null) Fleet.withVehicles(loaded, options.vehicles ?: loaded.vehicles.size.coerceAtLeast(1)) else loaded
+        val modelFile = if (options.url == null) preparedModelFile(model) else null
+        val figures = Figures()
+        figures.note("workload", options.workload.name.lowercase())
+        figures.note("plant", model.name)
+        figures.note("kernel", options.url ?: "started by the bench: ${options.launcher} --no-build, loopback.timeFactor=${options.timeFactor}")
+        val log = File.createTempFile("ktcs-bench-", ".log")
+        repeat(options.runs) { index ->
+            err.println("ktcs bench: run ${index + 1} of ${options.runs} (kTCS output: $log)")
+            val prefix = "Bench-${System.currentTimeMillis().toString(RADIX)}"
+            open(log, modelFile).use { ktcs ->
+                val orders = BenchOrders(model, options.seed + index)
+                when (options.workload) {
+                    Workload.DEMO -> DemoWorkload(options, figures).run(ktcs, orders, prefix)
+                    Workload.BATCH -> BatchWorkload(options, figures).run(ktcs, orders, LowerBound(model, options.operatingMillis), prefix)
+                }
+            }
+        }
+        figures.print(out)
+        return 0
+    }
+
+    private fun open(log: File, modelFile: Path?): KtcsUnderTest = options.url?.let { KtcsUnderTest.connect(it, options.pid) }
+        ?: KtcsUnderTest.start(options.launcher, modelFile, options.port, options.timeFactor, log, options.settings)
+
+    private fun preparedModelFile(model: PlantModel): Path {
+        val file = Files.createTempFile("ktcs-bench-plant-", ".xml")
+        file.toFile().deleteOnExit()
+        PlantModelFiles.write(model, file)
+        return file
+    }
+
+    private companion object {
+        const val RADIX = 36
+    }
+}

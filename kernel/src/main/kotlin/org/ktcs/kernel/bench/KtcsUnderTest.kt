@@ -1,0 +1,83 @@
+package org.ktcs.kernel.bench
+
+import java.io.File
+import java.nio.file.Path
+import java.util.concurrent.TimeUnit
+
+/**
+ * The kTCS the bench measures: either one it starts itself (`ktcs --no-build`, so the figures are those of the
+ * launcher a user runs) or one already running at a URL, whose process the bench then only knows if given its id.
+ */
+class KtcsUnderTest private constructor(
+    val client: BenchClient,
+    private val process: Process?,
+    val pid: Long?,
+    private val startNanos: Long,
+) : AutoCloseable {
+    /** `/proc` figures of the kTCS process, `null` when its process is unknown. */
+    val stats: ProcStats? = pid?.let(::ProcStats)
+
+    /**
+     * Waits until the web API answers and every vehicle is idle (procState IDLE, not moving); returns the seconds
+     * since the process was started.
+     */
+    fun awaitReady(timeoutSeconds: Long): Double {
+        val deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(timeoutSeconds)
+        while (System.nanoTime() < deadline) {
+            if (process != null && !process.isAlive) error("kTCS exited with code ${process.exitValue()} before it was ready")
+            val vehicles = client.vehicles()
+            if (vehicles != null && vehicles.all { it.string("procState") == "IDLE" && it.string("state") != "EXECUTING" }) {
+                return (System.nanoTime() - startNanos) / NANOS_PER_SECOND
+            }
+            Thread.sleep(READY_POLL_MILLIS)
+        }
+        error("kTCS was not ready (web API answering, vehicles idle) within $timeoutSeconds s")
+    }
+
+    override fun close() {
+        process ?: return
+        process.destroy()
+        if (!process.waitFor(STOP_SECONDS, TimeUnit.SECONDS)) process.destroyForcibly().waitFor()
+    }
+
+    companion object {
+        private const val NANOS_PER_SECOND = 1e9
+        private const val READY_POLL_MILLIS = 5L
+        private const val STOP_SECONDS = 10L
+
+        /** Connects to a kTCS that runs already; [pid], if known, lets the bench read its CPU and memory. */
+        fun connect(url: String, pid: Long?): KtcsUnderTest =
+            KtcsUnderTest(BenchClient(url.trimEnd('/').let { if (it.endsWith("/v1")) it else "$it/v1" }), null, pid, System.nanoTime())
+
+        /**
+         * Starts [launcher] (`ktcs`) with [model] (or its demo plant), on [port], with loopback vehicles at [timeFactor]
+         * and finished orders kept for the whole run; its output goes to [log].
+         */
+        fun start(launcher: Path, model: Path?, port: Int, timeFactor: Double, log: File, extraSettings: List<String>): KtcsUnderTest {
+            val settings = listOf(
+                "web.port=$port",
+                "web.bindAddress=127.0.0.1",
+                "xml.orders.port=0",
+                "xml.status.port=0",
+                "xml.bindAddress=127.0.0.1",
+                "loopback.timeFactor=$timeFactor",
+                "orderpool.sweepAge=$DAY_MILLIS",
+            ) + extraSettings
+            val command = buildList {
+                add(launcher.toString())
+                add("--no-build")
+                model?.let { addAll(listOf("--model", it.toString())) }
+                settings.forEach { addAll(listOf("--set", it)) }
+            }
+            val startNanos = System.nanoTime()
+            val process = ProcessBuilder(command)
+                .redirectErrorStream(true)
+                .redirectOutput(ProcessBuilder.Redirect.appendTo(log))
+                .start()
+            // The launcher execs java, so the child's id is the kernel's.
+            return KtcsUnderTest(BenchClient("http://127.0.0.1:$port/v1"), process, process.pid(), startNanos)
+        }
+
+        private const val DAY_MILLIS = 86_400_000L
+    }
+}
