@@ -7,7 +7,6 @@ package org.ktcs.kernel.bench
  */
 class BatchWorkload(private val options: BenchOptions, private val figures: Figures) {
     fun run(ktcs: KtcsUnderTest, orders: BenchOrders, bound: LowerBound, prefix: String) {
-        ktcs.awaitReady(DemoWorkload.READY_SECONDS)
         val vehicles = ktcs.client.vehicles().orEmpty().count { it.string("integrationLevel") == "TO_BE_UTILIZED" }
         val batch = orders.next("$prefix-", options.orders)
         EventWatcher(ktcs.client).use { watcher ->

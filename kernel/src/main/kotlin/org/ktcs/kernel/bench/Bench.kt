@@ -39,8 +39,26 @@ class Bench(private val options: BenchOptions, private val out: PrintStream, pri
         return 0
     }
 
-    private fun open(log: File, modelFile: Path?): KtcsUnderTest = options.url?.let { KtcsUnderTest.connect(it, options.pid) }
-        ?: KtcsUnderTest.start(options.launcher, modelFile, options.port, options.timeFactor, log, options.settings)
+    /**
+     * The kTCS to measure, ready. A started one whose port was taken meanwhile (ports in the ephemeral range may be
+     * held by any client connection on the machine) is started again on the next port.
+     */
+    private fun open(log: File, modelFile: Path?): KtcsUnderTest {
+        options.url?.let { return KtcsUnderTest.connect(it, options.pid).also { it.awaitReady(READY_SECONDS) } }
+        var attempt = 0
+        while (true) {
+            val port = options.port + attempt
+            val ktcs = KtcsUnderTest.start(options.launcher, modelFile, port, options.timeFactor, log, options.settings)
+            try {
+                ktcs.awaitReady(READY_SECONDS)
+                return ktcs
+            } catch (failed: IllegalStateException) {
+                ktcs.close()
+                if (++attempt >= PORT_ATTEMPTS || !log.readText().takeLast(LOG_TAIL).contains("Address already in use")) throw failed
+                err.println("ktcs bench: port $port is taken, trying ${port + 1}")
+            }
+        }
+    }
 
     private fun preparedModelFile(model: PlantModel): Path {
         val file = Files.createTempFile("ktcs-bench-plant-", ".xml")
@@ -51,5 +69,8 @@ class Bench(private val options: BenchOptions, private val out: PrintStream, pri
 
     private companion object {
         const val RADIX = 36
+        const val READY_SECONDS = 120L
+        const val PORT_ATTEMPTS = 5
+        const val LOG_TAIL = 2000
     }
 }

@@ -6,8 +6,7 @@ package org.ktcs.kernel.bench
  */
 class DemoWorkload(private val options: BenchOptions, private val figures: Figures) {
     fun run(ktcs: KtcsUnderTest, orders: BenchOrders, prefix: String) {
-        if (ktcs.pid != null && options.url == null) figures.record("launch_ready_s", ktcs.awaitReady(READY_SECONDS))
-        else ktcs.awaitReady(READY_SECONDS)
+        if (options.url == null) figures.record("launch_ready_s", ktcs.readySeconds)
         figures.record("rss_ready_mib", ktcs.stats?.rssMib())
         options.cpuBatches.forEach { size -> cpuPerOrder(ktcs, orders.next("$prefix-cpu$size-", size), size) }
         val single = OrderPosting.post(ktcs.client, orders.next("$prefix-c1-", options.posts), 1)
@@ -69,7 +68,6 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
     companion object {
         const val KERNEL_THREAD = "kernel"
         const val CONCURRENT_CLIENTS = 8
-        const val READY_SECONDS = 120L
         private const val MILLIS = 1000.0
         private const val MEDIAN = 0.5
         private const val P95 = 0.95

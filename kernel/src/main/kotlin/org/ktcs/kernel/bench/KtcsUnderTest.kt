@@ -14,6 +14,10 @@ class KtcsUnderTest private constructor(
     val pid: Long?,
     private val startNanos: Long,
 ) : AutoCloseable {
+    /** Seconds from starting the process to the web API answering with every vehicle idle; set by [awaitReady]. */
+    var readySeconds: Double? = null
+        private set
+
     /** `/proc` figures of the kTCS process, `null` when its process is unknown. */
     val stats: ProcStats? = pid?.let(::ProcStats)
 
@@ -27,7 +31,7 @@ class KtcsUnderTest private constructor(
             if (process != null && !process.isAlive) error("kTCS exited with code ${process.exitValue()} before it was ready")
             val vehicles = client.vehicles()
             if (vehicles != null && vehicles.all { it.string("procState") == "IDLE" && it.string("state") != "EXECUTING" }) {
-                return (System.nanoTime() - startNanos) / NANOS_PER_SECOND
+                return ((System.nanoTime() - startNanos) / NANOS_PER_SECOND).also { readySeconds = it }
             }
             Thread.sleep(READY_POLL_MILLIS)
         }
