@@ -176,7 +176,7 @@ object CommandLine {
         |  --url URL             measure a kTCS that runs already (e.g. http://127.0.0.1:55200) instead of starting one
         |  --pid PID             its process id, for CPU and memory figures
         |  --launcher FILE       the ktcs launcher to start (default ./ktcs), always with --no-build
-        |  --port N              web port of the started kTCS (default 57200)
+        |  --port N              web port of the started kTCS (default: a free one)
         |  --time-factor F       loopback.timeFactor of the started kTCS (default 100)
         |  --set key=value       a further setting for the started kTCS
         |  --seed S              seed of the random orders (default 1)

@@ -5,6 +5,7 @@ import org.ktcs.api.model.PlantModel
 import org.ktcs.kernel.persistence.PlantModelFiles
 import org.ktcs.kernel.simulation.Fleet
 import java.io.File
+import java.net.ServerSocket
 import java.nio.file.Files
 import java.nio.file.Path
 import java.io.PrintStream
@@ -46,8 +47,9 @@ class Bench(private val options: BenchOptions, private val out: PrintStream, pri
     private fun open(log: File, modelFile: Path?): KtcsUnderTest {
         options.url?.let { return KtcsUnderTest.connect(it, options.pid).also { it.awaitReady(READY_SECONDS) } }
         var attempt = 0
+        val firstPort = options.port.takeIf { it > 0 } ?: ServerSocket(0).use { it.localPort }
         while (true) {
-            val port = options.port + attempt
+            val port = firstPort + attempt
             val ktcs = KtcsUnderTest.start(options.launcher, modelFile, port, options.timeFactor, log, options.settings)
             try {
                 ktcs.awaitReady(READY_SECONDS)

@@ -65,5 +65,5 @@ object OrderPosting {
     val FINAL_STATES = setOf("FINISHED", "FAILED", "UNROUTABLE")
     const val NANOS_PER_MILLI = 1e6
     const val NANOS_PER_SECOND = 1e9
-    private const val POLL_MILLIS = 20L
+    private const val POLL_MILLIS = 100L
 }

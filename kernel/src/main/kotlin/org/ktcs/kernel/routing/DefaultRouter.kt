@@ -26,7 +26,7 @@ class DefaultRouter(private val configuration: RouterConfiguration = RouterConfi
     }
 
     override fun isGenerallyRoutable(order: TransportOrder): Boolean =
-        isRoutableInPrinciple(graphs.general, legCandidates(order, includeLockedLocations = true))
+        isRoutableInPrinciple(graphs.generalReachability, legCandidates(order, includeLockedLocations = true))
 
     override fun routeOrder(vehicle: Vehicle, sourcePoint: String, order: TransportOrder): List<DriveOrder>? {
         val avoided = parseResourceNames(order.properties[RESOURCES_TO_AVOID_PROPERTY])

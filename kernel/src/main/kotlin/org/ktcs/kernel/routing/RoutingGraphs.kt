@@ -12,6 +12,9 @@ internal class RoutingGraphs(val model: PlantModel, private val configuration: R
     /** Every drivable path direction, locked or not, at cost 1: what general routability asks about. */
     val general: RoutingGraph by lazy { buildRoutingGraph(model, includeLocked = true) { _, _ -> 1 } }
 
+    /** Reachability in [general], from its strongly connected components: built once per model, on first use. */
+    val generalReachability: Reachability by lazy { Reachability(general) }
+
     /** The search over the graph for vehicles of [key], without resources to avoid. */
     fun searchFor(key: GraphKey): RouteSearch = searches.getOrPut(key) {
         val costs = EdgeCosts(model, configuration, key)

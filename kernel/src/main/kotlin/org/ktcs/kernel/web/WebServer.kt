@@ -98,7 +98,7 @@ fun Application.webModule(
     install(WebSockets)
     val statusEvents = StatusEventBuffer()
     launch { feed(statusEvents, services) }
-    val document = ApiDocument.current
+    val document = lazy { ApiDocument.current }
     routing {
         contributions.forEach { it.install(this) }
         docsRoutes(document)
