@@ -171,6 +171,7 @@ object CommandLine {
         |          assignment latency, deadlock notifications, double allocations and shared positions
         |Options:
         |  --model FILE          plant the orders come from and the started kTCS loads (default: the demo plant)
+        |  --grid WxH            a generated one-way grid plant instead of --model (as ktcs simulate --grid)
         |  --vehicles N          vehicles of the started kTCS, each placed on a free point (default: the model's)
         |  --runs N              runs, each with a fresh kTCS; figures print as median (min, max) (default 1)
         |  --url URL             measure a kTCS that runs already (e.g. http://127.0.0.1:55200) instead of starting one
@@ -199,6 +200,7 @@ object CommandLine {
         forEachOption(rest) { name, value ->
             options = when (name) {
                 "--model" -> options.copy(model = Path.of(value()))
+                "--grid" -> options.copy(grid = parseGrid(value()))
                 "--runs" -> options.copy(runs = positive(name, value()))
                 "--vehicles" -> options.copy(vehicles = positive(name, value()))
                 "--url" -> options.copy(url = value())
@@ -218,6 +220,8 @@ object CommandLine {
                 else -> throw UsageException("unknown bench option '$name' (ktcs bench --help lists them)")
             }
         }
+        if (options.model != null && options.grid != null) throw UsageException("give either --model or --grid, not both")
+        if (options.url != null && options.grid != null) throw UsageException("--grid builds a plant for a kTCS the bench starts; not with --url")
         return options
     }
 

@@ -18,6 +18,8 @@ import org.ktcs.kernel.web.KernelVersion
 import java.io.PrintStream
 import java.nio.file.Files
 import java.nio.file.Path
+import java.util.concurrent.CompletableFuture
+import java.util.concurrent.CompletionException
 
 /** The `ktcs` command: parses the command line, runs one command and returns the process exit code. */
 class Ktcs(private val out: PrintStream, private val err: PrintStream, private val environment: Map<String, String>) {
@@ -47,10 +49,17 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
     private fun runKernel(options: RunOptions, awaitShutdown: (() -> Unit)?): Int {
         val signal = if (awaitShutdown == null) ShutdownSignal.install() else null
         val waitForShutdown = awaitShutdown ?: signal!!::await
+        // Reading the model is most of the start-up's own work (Jackson's Kotlin module reflects on every element
+        // class); it runs while the configuration, logging and extensions are set up.
+        val loading = CompletableFuture.supplyAsync { PlantModelLoader.load(options.model) }
         val config = config(options)
         Logging.apply(config)
-        val model = PlantModelLoader.load(options.model)
         val installed = extensions(config)
+        val model = try {
+            loading.join()
+        } catch (failed: CompletionException) {
+            throw failed.cause ?: failed
+        }
         withContextClassLoader(installed.classLoader) {
             val application =
                 KernelApplication(config, model, installed.extensions, installed::jarOf) { signal?.request() }

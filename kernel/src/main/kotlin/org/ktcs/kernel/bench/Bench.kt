@@ -4,6 +4,7 @@ import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.api.model.PlantModel
 import org.ktcs.kernel.persistence.PlantModelFiles
 import org.ktcs.kernel.simulation.Fleet
+import org.ktcs.kernel.simulation.GridPlant
 import java.io.File
 import java.net.ServerSocket
 import java.nio.file.Files
@@ -16,7 +17,8 @@ import java.io.PrintStream
  */
 class Bench(private val options: BenchOptions, private val out: PrintStream, private val err: PrintStream) {
     fun run(): Int {
-        val loaded = PlantModelLoader.load(options.model).model
+        val loaded = options.grid?.let { (width, height) -> GridPlant(width, height).build() }
+            ?: PlantModelLoader.load(options.model).model
         // A started kTCS gets the fleet asked for, each vehicle on a point of its own, as `ktcs simulate` places them.
         val model = if (options.url == null) Fleet.withVehicles(loaded, options.vehicles ?: loaded.vehicles.size.coerceAtLeast(1)) else loaded
         val modelFile = if (options.url == null) preparedModelFile(model) else null

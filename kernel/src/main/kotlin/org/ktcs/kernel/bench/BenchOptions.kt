@@ -11,6 +11,7 @@ enum class Workload { DEMO, BATCH }
  * @property url a running kTCS to measure; `null` starts [launcher] for each run.
  * @property pid the process id of the kTCS at [url], for its CPU and memory figures.
  * @property model the plant the orders are drawn from and the started kTCS loads (`null`: the demo plant).
+ * @property grid a generated grid plant (as `ktcs simulate --grid` builds it) instead of [model].
  * @property port web port of the started kTCS; 0 takes a free one.
  * @property vehicles the started kTCS's fleet (default: the model's vehicles), each placed on a point of its own.
  * @property cpuBatches sizes of the batches whose kernel CPU per finished order the demo workload measures.
@@ -25,6 +26,7 @@ data class BenchOptions(
     val url: String? = null,
     val pid: Long? = null,
     val model: Path? = null,
+    val grid: Pair<Int, Int>? = null,
     val vehicles: Int? = null,
     val launcher: Path = Path.of("./ktcs"),
     val port: Int = 0,

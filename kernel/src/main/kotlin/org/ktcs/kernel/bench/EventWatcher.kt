@@ -3,6 +3,7 @@ package org.ktcs.kernel.bench
 import kotlinx.serialization.json.Json
 import kotlinx.serialization.json.JsonArray
 import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
 import kotlinx.serialization.json.jsonObject
 import java.net.http.WebSocket
 import java.util.concurrent.CompletionStage
@@ -52,10 +53,26 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
 
     private fun onMessage(message: JsonObject) = synchronized(lock) {
         when (message.string("type")) {
-            "snapshot" -> message.array("objects").forEach { update(message.string("topic"), it.jsonObject, null) }
+            "snapshot" -> onSnapshot(message.string("topic"), message.array("objects").map { it.jsonObject })
             "event" -> update(message.string("topic"), message["current"] as? JsonObject, message["previous"] as? JsonObject)
             "missed" -> missed++
         }
+    }
+
+    /**
+     * A snapshot replaces what the bench knew of its topic all at once: checking its vehicles one by one against
+     * the others' older state would report conflicts that never existed.
+     */
+    private fun onSnapshot(topic: String?, objects: List<JsonObject>) {
+        if (topic != "vehicles") return objects.forEach { update(topic, it, null) }
+        allocations.clear()
+        positions.clear()
+        objects.forEach { vehicle ->
+            val name = vehicle.string("name") ?: return@forEach
+            allocations[name] = vehicle.heldResources()
+            positions[name] = vehicle.string("currentPosition")
+        }
+        allocations.keys.forEach(::checkConflicts)
     }
 
     private fun update(topic: String?, current: JsonObject?, previous: JsonObject?) {
@@ -80,10 +97,19 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
 
     private fun onVehicle(vehicle: JsonObject) {
         val name = vehicle.string("name") ?: return
-        val held = vehicle.array("allocatedResources").flatMap { (it as? JsonArray).orEmpty() }
-            .mapNotNull { (it as? kotlinx.serialization.json.JsonPrimitive)?.content }.toSet()
-        allocations[name] = held
+        allocations[name] = vehicle.heldResources()
         positions[name] = vehicle.string("currentPosition")
+        checkConflicts(name)
+    }
+
+    private fun JsonObject.heldResources(): Set<String> = array("allocatedResources")
+        .flatMap { (it as? JsonArray).orEmpty() }
+        .mapNotNull { (it as? JsonPrimitive)?.content }
+        .toSet()
+
+    /** Records every resource [name] holds that another vehicle holds too, and another vehicle on its point. */
+    private fun checkConflicts(name: String) {
+        val held = allocations[name].orEmpty()
         allocations.forEach { (other, resources) ->
             if (other == name) return@forEach
             resources.intersect(held).forEach { conflicts += "${minOf(name, other)}|${maxOf(name, other)}|$it" }

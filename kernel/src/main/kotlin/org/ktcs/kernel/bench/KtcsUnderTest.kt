@@ -66,6 +66,8 @@ class KtcsUnderTest private constructor(
                 "xml.bindAddress=127.0.0.1",
                 "loopback.timeFactor=$timeFactor",
                 "orderpool.sweepAge=$DAY_MILLIS",
+                // The batch workload follows every event; a burst of orders must not make kTCS drop some for it.
+                "web.webSocketBufferSize=$WEB_SOCKET_BUFFER",
             ) + extraSettings
             val command = buildList {
                 add(launcher.toString())
@@ -83,5 +85,6 @@ class KtcsUnderTest private constructor(
         }
 
         private const val DAY_MILLIS = 86_400_000L
+        private const val WEB_SOCKET_BUFFER = 1_000_000
     }
 }

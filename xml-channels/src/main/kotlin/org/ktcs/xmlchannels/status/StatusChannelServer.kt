@@ -44,7 +44,10 @@ internal class StatusChannelServer(private val messages: StatusMessages, private
             log.warn("XML status channel: subscribing to kernel events again after: {}", error.message)
             delay(RESUBSCRIBE_DELAY)
             true
-        }.collect { event -> messages.render(event)?.let { send(it.toByteArray(Charsets.UTF_8)) } }
+        }.collect { event ->
+            // Rendering XML is the expensive part: with nobody connected there is nobody to render it for.
+            if (clients.isNotEmpty()) messages.render(event)?.let { send(it.toByteArray(Charsets.UTF_8)) }
+        }
     }
 
     private fun send(document: ByteArray) {
