@@ -12,7 +12,8 @@ class BenchTest : FunSpec({
         .associate { it.substringBefore(": ") to it.substringAfter(": ") }
 
     test("the demo workload prints start-up, memory, CPU per order, creation rates and list latency") {
-        val args = arrayOf("--cpu-batches", "3", "--posts", "20", "--pool", "60", "--gets", "5", "--stall-timeout", "60")
+        val args =
+            arrayOf("--cpu-batches", "3", "--posts", "20", "--pool", "60", "--gets", "5", "--stall-timeout", "60")
         KtcsProcess("bench", "demo", *args).use { bench ->
             bench.awaitExit(timeout = 180.seconds) shouldBe 0
             val figures = figures(bench.output())

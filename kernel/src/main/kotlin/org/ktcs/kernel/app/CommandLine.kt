@@ -200,28 +200,57 @@ object CommandLine {
         forEachOption(rest) { name, value ->
             options = when (name) {
                 "--model" -> options.copy(model = Path.of(value()))
+
                 "--grid" -> options.copy(grid = parseGrid(value()))
+
                 "--runs" -> options.copy(runs = positive(name, value()))
+
                 "--vehicles" -> options.copy(vehicles = positive(name, value()))
+
                 "--url" -> options.copy(url = value())
+
                 "--pid" -> options.copy(pid = positive(name, value()).toLong())
+
                 "--launcher" -> options.copy(launcher = Path.of(value()))
+
                 "--port" -> options.copy(port = positive(name, value()))
+
                 "--time-factor" -> options.copy(timeFactor = positiveDecimal(name, value()))
+
                 "--set" -> options.copy(settings = options.settings + value())
-                "--seed" -> options.copy(seed = value().toLongOrNull() ?: throw UsageException("--seed expects a whole number"))
+
+                "--seed" -> options.copy(
+                    seed =
+                    value().toLongOrNull() ?: throw UsageException("--seed expects a whole number"),
+                )
+
                 "--cpu-batches" -> options.copy(cpuBatches = value().split(',').map { positive(name, it.trim()) })
+
                 "--posts" -> options.copy(posts = positive(name, value()))
+
                 "--pool" -> options.copy(poolSize = positive(name, value()))
+
                 "--gets" -> options.copy(gets = positive(name, value()))
+
                 "--orders" -> options.copy(orders = positive(name, value()))
+
                 "--operating-time" -> options.copy(operatingMillis = positive(name, value()).toLong())
+
                 "--stall-timeout" -> options.copy(stallSeconds = positiveDecimal(name, value()))
+
                 else -> throw UsageException("unknown bench option '$name' (ktcs bench --help lists them)")
             }
         }
-        if (options.model != null && options.grid != null) throw UsageException("give either --model or --grid, not both")
-        if (options.url != null && options.grid != null) throw UsageException("--grid builds a plant for a kTCS the bench starts; not with --url")
+        if (options.model != null &&
+            options.grid != null
+        ) {
+            throw UsageException("give either --model or --grid, not both")
+        }
+        if (options.url != null &&
+            options.grid != null
+        ) {
+            throw UsageException("--grid builds a plant for a kTCS the bench starts; not with --url")
+        }
         return options
     }
 

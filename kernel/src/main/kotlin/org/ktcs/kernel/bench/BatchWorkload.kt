@@ -25,7 +25,12 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
             if (stats != null && finished > 0) {
                 figures.record("kernel_cpu_per_order_ms", (stats.cpuSeconds() - cpuStart!!) * MILLIS / finished)
                 stats.threadCpuSeconds(DemoWorkload.KERNEL_THREAD)?.let { thread ->
-                    threadStart?.let { figures.record("kernel_thread_cpu_per_order_ms", (thread - it) * MILLIS / finished) }
+                    threadStart?.let {
+                        figures.record(
+                            "kernel_thread_cpu_per_order_ms",
+                            (thread - it) * MILLIS / finished,
+                        )
+                    }
                 }
             }
             val wall = (end - start) / OrderPosting.NANOS_PER_SECOND
@@ -59,7 +64,10 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
             }
             if (final >= options.orders) return lastFinal
             if ((now - lastProgress) / OrderPosting.NANOS_PER_SECOND > options.stallSeconds) {
-                figures.note("stalled", "no order finished for ${options.stallSeconds} s; $final of ${options.orders} final")
+                figures.note(
+                    "stalled",
+                    "no order finished for ${options.stallSeconds} s; $final of ${options.orders} final",
+                )
                 return lastFinal
             }
             Thread.sleep(POLL_MILLIS)

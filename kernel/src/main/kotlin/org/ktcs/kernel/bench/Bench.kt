@@ -1,15 +1,15 @@
 package org.ktcs.kernel.bench
 
-import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.api.model.PlantModel
+import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.persistence.PlantModelFiles
 import org.ktcs.kernel.simulation.Fleet
 import org.ktcs.kernel.simulation.GridPlant
 import java.io.File
+import java.io.PrintStream
 import java.net.ServerSocket
 import java.nio.file.Files
 import java.nio.file.Path
-import java.io.PrintStream
 
 /**
  * `ktcs bench`: drives a kTCS through its web API v1 like an external client and prints one `name: value` line per
@@ -20,12 +20,22 @@ class Bench(private val options: BenchOptions, private val out: PrintStream, pri
         val loaded = options.grid?.let { (width, height) -> GridPlant(width, height).build() }
             ?: PlantModelLoader.load(options.model).model
         // A started kTCS gets the fleet asked for, each vehicle on a point of its own, as `ktcs simulate` places them.
-        val model = if (options.url == null) Fleet.withVehicles(loaded, options.vehicles ?: loaded.vehicles.size.coerceAtLeast(1)) else loaded
+        val model = if (options.url ==
+            null
+        ) {
+            Fleet.withVehicles(loaded, options.vehicles ?: loaded.vehicles.size.coerceAtLeast(1))
+        } else {
+            loaded
+        }
         val modelFile = if (options.url == null) preparedModelFile(model) else null
         val figures = Figures()
         figures.note("workload", options.workload.name.lowercase())
         figures.note("plant", model.name)
-        figures.note("kernel", options.url ?: "started by the bench: ${options.launcher} --no-build, loopback.timeFactor=${options.timeFactor}")
+        figures.note(
+            "kernel",
+            options.url
+                ?: "started by the bench: ${options.launcher} --no-build, loopback.timeFactor=${options.timeFactor}",
+        )
         val log = File.createTempFile("ktcs-bench-", ".log")
         repeat(options.runs) { index ->
             err.println("ktcs bench: run ${index + 1} of ${options.runs} (kTCS output: $log)")
@@ -34,7 +44,11 @@ class Bench(private val options: BenchOptions, private val out: PrintStream, pri
                 val orders = BenchOrders(model, options.seed + index)
                 when (options.workload) {
                     Workload.DEMO -> DemoWorkload(options, figures).run(ktcs, orders, prefix)
-                    Workload.BATCH -> BatchWorkload(options, figures).run(ktcs, orders, LowerBound(model, options.operatingMillis), prefix)
+
+                    Workload.BATCH -> BatchWorkload(
+                        options,
+                        figures,
+                    ).run(ktcs, orders, LowerBound(model, options.operatingMillis), prefix)
                 }
             }
         }
@@ -58,7 +72,11 @@ class Bench(private val options: BenchOptions, private val out: PrintStream, pri
                 return ktcs
             } catch (failed: IllegalStateException) {
                 ktcs.close()
-                if (++attempt >= PORT_ATTEMPTS || !log.readText().takeLast(LOG_TAIL).contains("Address already in use")) throw failed
+                if (++attempt >= PORT_ATTEMPTS ||
+                    !log.readText().takeLast(LOG_TAIL).contains("Address already in use")
+                ) {
+                    throw failed
+                }
                 err.println("ktcs bench: port $port is taken, trying ${port + 1}")
             }
         }

@@ -28,7 +28,12 @@ class BenchOrders(model: PlantModel, seed: Long) {
     private companion object {
         fun stationsAllowing(model: PlantModel, operation: String): List<String> = model.locations
             .filter { location -> model.locationType(location.type)?.allowedOperations?.contains(operation) == true }
-            .filter { location -> location.links.any { it.allowedOperations.isEmpty() || operation in it.allowedOperations } }
+            .filter { location ->
+                location.links.any {
+                    it.allowedOperations.isEmpty() ||
+                        operation in it.allowedOperations
+                }
+            }
             .map { it.name }
     }
 }

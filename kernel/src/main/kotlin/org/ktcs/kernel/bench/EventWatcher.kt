@@ -33,7 +33,9 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
         .also { it.sendText("""{"type":"subscribe","topics":["vehicles","transportOrders","notifications"]}""", true) }
 
     /** The states of the orders whose names start with [prefix]. */
-    fun states(prefix: String): Map<String, String> = synchronized(lock) { orderStates.filterKeys { it.startsWith(prefix) } }
+    fun states(
+        prefix: String,
+    ): Map<String, String> = synchronized(lock) { orderStates.filterKeys { it.startsWith(prefix) } }
 
     fun assignLatenciesMillis(): List<Double> = synchronized(lock) { assignLatencies.toList() }
 
@@ -54,7 +56,13 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
     private fun onMessage(message: JsonObject) = synchronized(lock) {
         when (message.string("type")) {
             "snapshot" -> onSnapshot(message.string("topic"), message.array("objects").map { it.jsonObject })
-            "event" -> update(message.string("topic"), message["current"] as? JsonObject, message["previous"] as? JsonObject)
+
+            "event" -> update(
+                message.string("topic"),
+                message["current"] as? JsonObject,
+                message["previous"] as? JsonObject,
+            )
+
             "missed" -> missed++
         }
     }
@@ -91,7 +99,11 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
         val now = System.nanoTime()
         when (state) {
             "DISPATCHABLE" -> dispatchableAt[name] = now
-            "BEING_PROCESSED" -> dispatchableAt.remove(name)?.let { assignLatencies += (now - it) / OrderPosting.NANOS_PER_MILLI }
+
+            "BEING_PROCESSED" -> dispatchableAt.remove(name)?.let {
+                assignLatencies +=
+                    (now - it) / OrderPosting.NANOS_PER_MILLI
+            }
         }
     }
 

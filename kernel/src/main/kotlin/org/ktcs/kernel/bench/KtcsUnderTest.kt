@@ -28,9 +28,15 @@ class KtcsUnderTest private constructor(
     fun awaitReady(timeoutSeconds: Long): Double {
         val deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(timeoutSeconds)
         while (System.nanoTime() < deadline) {
-            if (process != null && !process.isAlive) error("kTCS exited with code ${process.exitValue()} before it was ready")
+            if (process != null &&
+                !process.isAlive
+            ) {
+                error("kTCS exited with code ${process.exitValue()} before it was ready")
+            }
             val vehicles = client.vehicles()
-            if (vehicles != null && vehicles.all { it.string("procState") == "IDLE" && it.string("state") != "EXECUTING" }) {
+            if (vehicles != null &&
+                vehicles.all { it.string("procState") == "IDLE" && it.string("state") != "EXECUTING" }
+            ) {
                 return ((System.nanoTime() - startNanos) / NANOS_PER_SECOND).also { readySeconds = it }
             }
             Thread.sleep(READY_POLL_MILLIS)
@@ -51,13 +57,29 @@ class KtcsUnderTest private constructor(
 
         /** Connects to a kTCS that runs already; [pid], if known, lets the bench read its CPU and memory. */
         fun connect(url: String, pid: Long?): KtcsUnderTest =
-            KtcsUnderTest(BenchClient(url.trimEnd('/').let { if (it.endsWith("/v1")) it else "$it/v1" }), null, pid, System.nanoTime())
+            KtcsUnderTest(
+                BenchClient(
+                    url.trimEnd('/').let {
+                        if (it.endsWith("/v1")) it else "$it/v1"
+                    },
+                ),
+                null,
+                pid,
+                System.nanoTime(),
+            )
 
         /**
          * Starts [launcher] (`ktcs`) with [model] (or its demo plant), on [port], with loopback vehicles at [timeFactor]
          * and finished orders kept for the whole run; its output goes to [log].
          */
-        fun start(launcher: Path, model: Path?, port: Int, timeFactor: Double, log: File, extraSettings: List<String>): KtcsUnderTest {
+        fun start(
+            launcher: Path,
+            model: Path?,
+            port: Int,
+            timeFactor: Double,
+            log: File,
+            extraSettings: List<String>,
+        ): KtcsUnderTest {
             val settings = listOf(
                 "web.port=$port",
                 "web.bindAddress=127.0.0.1",

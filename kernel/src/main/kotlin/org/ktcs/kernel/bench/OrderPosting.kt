@@ -5,7 +5,12 @@ import java.util.concurrent.TimeUnit
 import java.util.concurrent.atomic.AtomicInteger
 
 /** What posting a set of orders took: wall time, each request's latency and the bench's own CPU time. */
-data class PostingResult(val count: Int, val wallSeconds: Double, val latenciesMillis: List<Double>, val clientCpuSeconds: Double) {
+data class PostingResult(
+    val count: Int,
+    val wallSeconds: Double,
+    val latenciesMillis: List<Double>,
+    val clientCpuSeconds: Double,
+) {
     val perSecond: Double get() = count / wallSeconds
 }
 

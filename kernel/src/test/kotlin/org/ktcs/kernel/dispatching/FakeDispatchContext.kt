@@ -63,7 +63,9 @@ class FakeDispatchContext(var model: PlantModel) : DispatchContext {
         private set
 
     override fun dispatchableOrders(): Collection<TransportOrder> =
-        orders.values.also { dispatchableReads++ }.filter { it.state == TransportOrderState.DISPATCHABLE }.sortedBy { it.creationTime }
+        orders.values.also {
+            dispatchableReads++
+        }.filter { it.state == TransportOrderState.DISPATCHABLE }.sortedBy { it.creationTime }
 
     override fun transportOrder(name: String): TransportOrder? = orders[name]
 
