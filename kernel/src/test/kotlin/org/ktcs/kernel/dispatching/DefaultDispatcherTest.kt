@@ -5,7 +5,6 @@ import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.shouldBe
 import org.ktcs.api.kernel.Explained
 import org.ktcs.api.order.OrderSequence
-import org.ktcs.api.order.TransportOrderState
 
 class DefaultDispatcherTest : FunSpec({
     test("an assignment the kernel refuses does not keep the other orders from being assigned") {
@@ -47,33 +46,5 @@ class DefaultDispatcherTest : FunSpec({
             "Low" to "Recharge-01",
             "Idle" to "Park-02",
         )
-    }
-})
-
-class IncrementalDispatchTest : FunSpec({
-    test("a run in which no vehicle is available does not read the waiting orders") {
-        val context = FakeDispatchContext(plant())
-        context.add(vehicle("V1").processing("Busy"), order("Busy", state = TransportOrderState.BEING_PROCESSED))
-        context.add(*(1..100).map { order("T$it") }.toTypedArray())
-
-        context.dispatcher().dispatch()
-
-        context.dispatchableReads shouldBe 0
-        context.assignments shouldBe emptyList()
-    }
-
-    test("an order that became dispatchable while the vehicles were busy is assigned once one is free") {
-        val context = FakeDispatchContext(plant())
-        val dispatcher = context.dispatcher()
-        context.add(vehicle("V1").processing("Busy"), order("Busy", state = TransportOrderState.BEING_PROCESSED))
-        context.add(order("T1"))
-        dispatcher.dispatch()
-        context.assignments shouldBe emptyList()
-
-        context.add(vehicle("V1"), order("Busy", state = TransportOrderState.FINISHED))
-        dispatcher.dispatch()
-
-        context.assignedOrder("V1") shouldBe "T1"
-        context.dispatchableReads shouldBe 1
     }
 })
