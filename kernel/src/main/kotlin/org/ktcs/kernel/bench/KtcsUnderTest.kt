@@ -13,6 +13,7 @@ class KtcsUnderTest private constructor(
     private val process: Process?,
     val pid: Long?,
     private val startNanos: Long,
+    private val port: Int? = null,
 ) : AutoCloseable {
     /** Seconds from starting the process to the web API answering with every vehicle idle; set by [awaitReady]. */
     var readySeconds: Double? = null
@@ -33,7 +34,9 @@ class KtcsUnderTest private constructor(
             ) {
                 error("kTCS exited with code ${process.exitValue()} before it was ready")
             }
-            val vehicles = client.vehicles()
+            // Connecting to a local port nobody listens on yet can make the kernel hand the client that very port as
+            // its own (TCP self-connect), and kTCS then finds its port taken: ask only once it listens.
+            val vehicles = if (port == null || isListening(port)) client.vehicles() else null
             if (vehicles != null &&
                 vehicles.all { it.string("procState") == "IDLE" && it.string("state") != "EXECUTING" }
             ) {
@@ -42,6 +45,16 @@ class KtcsUnderTest private constructor(
             Thread.sleep(READY_POLL_MILLIS)
         }
         error("kTCS was not ready (web API answering, vehicles idle) within $timeoutSeconds s")
+    }
+
+    private fun isListening(port: Int): Boolean {
+        val hexPort = ":%04X".format(port)
+        return listOf("/proc/net/tcp", "/proc/net/tcp6").any { table ->
+            runCatching { File(table).readLines() }.getOrDefault(emptyList()).drop(1).any { line ->
+                val fields = line.trim().split(Regex("\\s+"))
+                fields.getOrNull(1)?.endsWith(hexPort) == true && fields.getOrNull(3) == LISTEN
+            }
+        }
     }
 
     override fun close() {
@@ -103,10 +116,11 @@ class KtcsUnderTest private constructor(
                 .redirectOutput(ProcessBuilder.Redirect.appendTo(log))
                 .start()
             // The launcher execs java, so the child's id is the kernel's.
-            return KtcsUnderTest(BenchClient("http://127.0.0.1:$port/v1"), process, process.pid(), startNanos)
+            return KtcsUnderTest(BenchClient("http://127.0.0.1:$port/v1"), process, process.pid(), startNanos, port)
         }
 
         private const val DAY_MILLIS = 86_400_000L
+        private const val LISTEN = "0A"
         private const val WEB_SOCKET_BUFFER = 1_000_000
     }
 }
