@@ -29,6 +29,7 @@ class WsSession(
     private val json = V1Json.json
     private var topics = emptySet<WsTopic>()
     private var sequence = 0L
+    private val vehicles = EncodedVehicles()
 
     suspend fun run() = coroutineScope {
         var feed: Job? = null
@@ -98,8 +99,10 @@ class WsSession(
     }
 
     private suspend fun forward(event: KernelEvent) {
-        val change = WsTopics.change(event) ?: return
-        if (change.topic in topics) send(WsEvent(change.topic.wireName, sequence++, change.previous, change.current))
+        // Encoding is the costly part: events of topics the client did not ask for are not encoded at all.
+        if (WsTopics.topicOf(event) !in topics) return
+        val change = WsTopics.change(event, vehicles) ?: return
+        send(WsEvent(change.topic.wireName, sequence++, change.previous, change.current))
     }
 
     private suspend fun send(message: WsServerMessage) {

@@ -11,6 +11,7 @@ import org.ktcs.api.event.TransportOrderEvent
 import org.ktcs.api.event.UserNotification
 import org.ktcs.api.event.UserNotificationEvent
 import org.ktcs.api.event.VehicleEvent
+import org.ktcs.api.model.Vehicle
 import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.web.v1.V1Json
 import org.ktcs.kernel.web.v1.events.toSseDto
@@ -37,9 +38,22 @@ internal object WsTopics {
         WsTopic.NOTIFICATIONS -> services.notifications.notifications().map { json.encodeToJsonElement(it.toDto()) }
     }
 
-    /** The topic and the previous/current state of [event] on the wire, or `null` for events no topic carries. */
-    fun change(event: KernelEvent): Change? = when (event) {
-        is VehicleEvent -> Change.of(WsTopic.VEHICLES, event) { json.encodeToJsonElement(it.toSseDto()) }
+    /** The topic that carries [event], or `null` if none does; tells whether [change] is needed at all. */
+    fun topicOf(event: KernelEvent): WsTopic? = when (event) {
+        is VehicleEvent -> WsTopic.VEHICLES
+        is TransportOrderEvent -> WsTopic.TRANSPORT_ORDERS
+        is OrderSequenceEvent -> WsTopic.ORDER_SEQUENCES
+        is PathEvent, is LocationEvent -> WsTopic.PLANT_MODEL
+        is UserNotificationEvent -> WsTopic.NOTIFICATIONS
+        else -> null
+    }
+
+    /**
+     * The topic and the previous/current state of [event] on the wire, or `null` for events no topic carries.
+     * [vehicles] keeps each vehicle's last encoded state, which is the next event's previous state.
+     */
+    fun change(event: KernelEvent, vehicles: EncodedVehicles = EncodedVehicles()): Change? = when (event) {
+        is VehicleEvent -> Change.of(WsTopic.VEHICLES, event, vehicles::encode)
 
         is TransportOrderEvent -> Change.of(WsTopic.TRANSPORT_ORDERS, event) { json.encodeToJsonElement(it.toSseDto()) }
 
@@ -56,6 +70,19 @@ internal object WsTopics {
         )
 
         else -> null
+    }
+}
+
+/**
+ * Each vehicle's state as last encoded, by identity: vehicles change many times a second while they drive, and the
+ * state an event reports as previous is the one the event before reported as current.
+ */
+internal class EncodedVehicles {
+    private val last = HashMap<String, Pair<Vehicle, JsonElement>>()
+
+    fun encode(vehicle: Vehicle): JsonElement {
+        last[vehicle.name]?.takeIf { it.first === vehicle }?.let { return it.second }
+        return V1Json.json.encodeToJsonElement(vehicle.toSseDto()).also { last[vehicle.name] = vehicle to it }
     }
 }
 

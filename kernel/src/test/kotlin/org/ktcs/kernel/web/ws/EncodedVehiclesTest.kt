@@ -1,0 +1,30 @@
+package org.ktcs.kernel.web.ws
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.shouldNotBe
+import io.kotest.matchers.types.shouldBeSameInstanceAs
+import kotlinx.serialization.json.encodeToJsonElement
+import org.ktcs.api.event.VehicleEvent
+import org.ktcs.api.model.Vehicle
+import org.ktcs.kernel.web.v1.V1Json
+import org.ktcs.kernel.web.v1.events.toSseDto
+
+class EncodedVehiclesTest : FunSpec({
+    test("an event's previous state reuses the encoding of the event before, and a changed vehicle is encoded anew") {
+        val encoded = EncodedVehicles()
+        val parked = Vehicle("Vehicle-01", currentPosition = "Point-0001")
+        val moved = parked.copy(currentPosition = "Point-0002")
+        val first = WsTopics.change(VehicleEvent(null, parked), encoded)!!
+
+        val second = WsTopics.change(VehicleEvent(parked, moved), encoded)!!
+
+        second.previous shouldBeSameInstanceAs first.current
+        second.current shouldBe V1Json.json.encodeToJsonElement(moved.toSseDto())
+        second.current shouldNotBe second.previous
+    }
+
+    test("each event kind has the topic that carries it") {
+        WsTopics.topicOf(VehicleEvent(null, Vehicle("Vehicle-01"))) shouldBe WsTopic.VEHICLES
+    }
+})
