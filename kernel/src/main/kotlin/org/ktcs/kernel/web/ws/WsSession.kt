@@ -29,7 +29,7 @@ class WsSession(
     private val json = V1Json.json
     private var topics = emptySet<WsTopic>()
     private var sequence = 0L
-    private val vehicles = EncodedVehicles()
+    private val encoded = EncodedObjects()
 
     suspend fun run() = coroutineScope {
         var feed: Job? = null
@@ -101,7 +101,7 @@ class WsSession(
     private suspend fun forward(event: KernelEvent) {
         // Encoding is the costly part: events of topics the client did not ask for are not encoded at all.
         if (WsTopics.topicOf(event) !in topics) return
-        val change = WsTopics.change(event, vehicles) ?: return
+        val change = WsTopics.change(event, encoded) ?: return
         send(WsEvent(change.topic.wireName, sequence++, change.previous, change.current))
     }
 

@@ -12,6 +12,7 @@ import org.ktcs.api.event.UserNotification
 import org.ktcs.api.event.UserNotificationEvent
 import org.ktcs.api.event.VehicleEvent
 import org.ktcs.api.model.Vehicle
+import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.web.v1.V1Json
 import org.ktcs.kernel.web.v1.events.toSseDto
@@ -50,12 +51,12 @@ internal object WsTopics {
 
     /**
      * The topic and the previous/current state of [event] on the wire, or `null` for events no topic carries.
-     * [vehicles] keeps each vehicle's last encoded state, which is the next event's previous state.
+     * [encoded] keeps the last encoded states of vehicles and orders, which are the next events' previous states.
      */
-    fun change(event: KernelEvent, vehicles: EncodedVehicles = EncodedVehicles()): Change? = when (event) {
-        is VehicleEvent -> Change.of(WsTopic.VEHICLES, event, vehicles::encode)
+    fun change(event: KernelEvent, encoded: EncodedObjects = EncodedObjects()): Change? = when (event) {
+        is VehicleEvent -> Change.of(WsTopic.VEHICLES, event, encoded.vehicles::of)
 
-        is TransportOrderEvent -> Change.of(WsTopic.TRANSPORT_ORDERS, event) { json.encodeToJsonElement(it.toSseDto()) }
+        is TransportOrderEvent -> Change.of(WsTopic.TRANSPORT_ORDERS, event, encoded.orders::of)
 
         is OrderSequenceEvent -> Change.of(WsTopic.ORDER_SEQUENCES, event) { json.encodeToJsonElement(it.toSseDto()) }
 
@@ -74,15 +75,33 @@ internal object WsTopics {
 }
 
 /**
- * Each vehicle's state as last encoded, by identity: vehicles change many times a second while they drive, and the
- * state an event reports as previous is the one the event before reported as current.
+ * The objects' states as last encoded, by identity, for the [capacity] most recently changed objects: a driving
+ * vehicle or an order under way changes many times a second, and the state an event reports as previous is the one
+ * the event before reported as current, so each state is encoded once instead of twice.
  */
-internal class EncodedVehicles {
-    private val last = HashMap<String, Pair<Vehicle, JsonElement>>()
+internal class LastEncoded<T : Any>(
+    private val capacity: Int,
+    private val nameOf: (T) -> String,
+    private val encode: (T) -> JsonElement,
+) {
+    private val last = object : LinkedHashMap<String, Pair<T, JsonElement>>(16, 0.75f, true) {
+        override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, Pair<T, JsonElement>>) = size > capacity
+    }
 
-    fun encode(vehicle: Vehicle): JsonElement {
-        last[vehicle.name]?.takeIf { it.first === vehicle }?.let { return it.second }
-        return V1Json.json.encodeToJsonElement(vehicle.toSseDto()).also { last[vehicle.name] = vehicle to it }
+    fun of(value: T): JsonElement {
+        val name = nameOf(value)
+        last[name]?.takeIf { it.first === value }?.let { return it.second }
+        return encode(value).also { last[name] = value to it }
+    }
+}
+
+/** A WebSocket session's [LastEncoded] vehicles and transport orders. */
+internal class EncodedObjects(capacity: Int = DEFAULT_CAPACITY) {
+    val vehicles = LastEncoded<Vehicle>(capacity, { it.name }) { V1Json.json.encodeToJsonElement(it.toSseDto()) }
+    val orders = LastEncoded<TransportOrder>(capacity, { it.name }) { V1Json.json.encodeToJsonElement(it.toSseDto()) }
+
+    private companion object {
+        const val DEFAULT_CAPACITY = 512
     }
 }
 

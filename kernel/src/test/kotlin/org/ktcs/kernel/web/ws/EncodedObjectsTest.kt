@@ -10,9 +10,9 @@ import org.ktcs.api.model.Vehicle
 import org.ktcs.kernel.web.v1.V1Json
 import org.ktcs.kernel.web.v1.events.toSseDto
 
-class EncodedVehiclesTest : FunSpec({
+class EncodedObjectsTest : FunSpec({
     test("an event's previous state reuses the encoding of the event before, and a changed vehicle is encoded anew") {
-        val encoded = EncodedVehicles()
+        val encoded = EncodedObjects()
         val parked = Vehicle("Vehicle-01", currentPosition = "Point-0001")
         val moved = parked.copy(currentPosition = "Point-0002")
         val first = WsTopics.change(VehicleEvent(null, parked), encoded)!!
@@ -24,7 +24,18 @@ class EncodedVehiclesTest : FunSpec({
         second.current shouldNotBe second.previous
     }
 
-    test("each event kind has the topic that carries it") {
-        WsTopics.topicOf(VehicleEvent(null, Vehicle("Vehicle-01"))) shouldBe WsTopic.VEHICLES
+    test("only the most recently changed objects are kept") {
+        var encodings = 0
+        val last = LastEncoded<Vehicle>(2, { it.name }) {
+            encodings++
+            V1Json.json.encodeToJsonElement(it.toSseDto())
+        }
+        val vehicles = (1..3).map { Vehicle("Vehicle-0$it") }
+        vehicles.forEach { last.of(it) }
+
+        last.of(vehicles[2])
+        last.of(vehicles[0])
+
+        encodings shouldBe 4
     }
 })
