@@ -102,11 +102,15 @@ class WsSession(
         // Encoding is the costly part: events of topics the client did not ask for are not encoded at all.
         if (WsTopics.topicOf(event) !in topics) return
         val change = WsTopics.change(event, encoded) ?: return
-        send(WsEvent(change.topic.wireName, sequence++, change.previous, change.current))
+        sendText(change.eventText(sequence++))
     }
 
-    private suspend fun send(message: WsServerMessage) {
-        socket.send(Frame.Text(json.encodeToString(WsServerMessage.serializer(), message)))
+    private suspend fun send(message: WsServerMessage) = sendText(
+        json.encodeToString(WsServerMessage.serializer(), message),
+    )
+
+    private suspend fun sendText(text: String) {
+        socket.send(Frame.Text(text))
         // Sending only queues the frame, without limit; waiting for it to be written is what lets a client that
         // reads slowly hold this session up, so that its event buffer fills and it is told it missed events.
         socket.flush()
