@@ -1,5 +1,7 @@
 package org.ktcs.adapters.loopback
 
+import kotlin.math.roundToLong
+
 /**
  * How loopback vehicles behave unless a vehicle's properties (see [LoopbackProperties]) say otherwise.
  *
@@ -15,8 +17,9 @@ package org.ktcs.adapters.loopback
  *   (openTCS issue #183).
  * @property commandQueueCapacity how many movement commands a vehicle holds at a time.
  * @property placeUnpositionedVehicles place a vehicle that has no start point on a free park position or point.
- * @property positionReportIntervalMillis simulated ms between precise-position reports while driving; 0 reports only
- *   at points, which keeps long simulations fast.
+ * @property positionReportIntervalMillis kernel-clock ms (wall-clock time, whatever the time factor) between
+ *   precise-position reports while driving; 0 reports only at points, which keeps long simulations fast. Reports cost
+ *   the kernel per second of its clock, so a faster simulation must not send more of them per second.
  */
 data class LoopbackSettings(
     val timeFactor: Double = 1.0,
@@ -42,4 +45,8 @@ data class LoopbackSettings(
         require(commandQueueCapacity >= 1) { "commandQueueCapacity must be at least 1, was $commandQueueCapacity" }
         require(positionReportIntervalMillis >= 0) { "positionReportIntervalMillis must not be negative" }
     }
+
+    /** [positionReportIntervalMillis] in simulated ms, the time a vehicle's motion runs on. */
+    val positionReportIntervalSimulatedMillis: Long
+        get() = (positionReportIntervalMillis * timeFactor).roundToLong()
 }

@@ -94,7 +94,7 @@ internal class Simulation(
         charger.stop()
         vehicle.changeState(VehicleState.EXECUTING)
         val leg = Leg.of(command.step, context.plantModel, context.vehicle()) ?: return unknownPath(command)
-        val interval = settings.positionReportIntervalMillis
+        val interval = settings.positionReportIntervalSimulatedMillis
         val stopAtEnd = !mayKeepGoing(command)
         begin(Driving(command, leg, velocity, stopAtEnd, planner(leg), vehicle, drain, time, interval, ::driven))
     }

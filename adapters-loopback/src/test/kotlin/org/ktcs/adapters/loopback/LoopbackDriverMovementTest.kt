@@ -3,6 +3,7 @@ package org.ktcs.adapters.loopback
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.collections.shouldHaveSize
+import io.kotest.matchers.doubles.shouldBeLessThanOrEqual
 import io.kotest.matchers.shouldBe
 import org.ktcs.adapters.loopback.LoopbackFixtures.aToB
 import org.ktcs.adapters.loopback.LoopbackFixtures.bToC
@@ -131,11 +132,26 @@ class LoopbackDriverMovementTest : FunSpec({
         driving.first { it.first == 6_000L }.second shouldBe Report.PrecisePosition(Position(5_000, 0), 0.0)
     }
 
-    test("the report interval is simulated time too") {
+    test("the report interval is kernel-clock time, whatever the time factor") {
         val harness = Harness(LoopbackSettings(timeFactor = 2.0, positionReportIntervalMillis = 500))
         harness.send(aToB)
         harness.clock.runUntilIdle()
-        harness.context.timesOf<Report.PrecisePosition>().filter { it > 0 } shouldBe (1..24).map { it * 250L }
+        // 12 s of simulated driving take 6 s of the kernel's clock: a report every 500 ms of it, then the arrival.
+        harness.context.timesOf<Report.PrecisePosition>().filter { it > 0 } shouldBe (1..12).map { it * 500L }
+    }
+
+    test("at time factor 100 a vehicle sends no more position reports per kernel-clock second than at factor 1") {
+        fun reportsPerSecondWhileDriving(timeFactor: Double): Double {
+            val harness = Harness(LoopbackSettings(timeFactor = timeFactor, positionReportIntervalMillis = 500))
+            harness.send(aToB)
+            harness.clock.runUntilIdle()
+            val arrival = harness.executedAt().single()
+            val between = harness.context.timesOf<Report.PrecisePosition>().count { it in 1 until arrival }
+            return between * 1000.0 / arrival
+        }
+        val atFactor1 = reportsPerSecondWhileDriving(1.0)
+        atFactor1 shouldBe 23 * 1000.0 / 12_000
+        reportsPerSecondWhileDriving(100.0) shouldBeLessThanOrEqual atFactor1
     }
 
     test("reports precise positions only at points when the interval is 0") {

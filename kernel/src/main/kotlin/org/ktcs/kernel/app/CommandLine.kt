@@ -1,5 +1,7 @@
 package org.ktcs.kernel.app
 
+import org.ktcs.kernel.bench.BenchOptions
+import org.ktcs.kernel.bench.Workload
 import java.nio.file.Path
 
 /** What the user asked `ktcs` to do. */
@@ -24,6 +26,11 @@ sealed interface Command {
 
     /** Run the kernel with loopback vehicles on random orders and print figures. */
     data class Simulate(val options: SimulateOptions) : Command
+
+    /** Drive a kTCS through its web API like an external client and print figures. */
+    data class Bench(val options: BenchOptions) : Command
+
+    data object BenchHelp : Command
 
     data object Help : Command
 
@@ -55,6 +62,9 @@ object CommandLine {
         |       ktcs model convert IN OUT                          convert a plant-model file to version 7.0.0
         |       ktcs simulate [--model FILE | --grid WxH] [--vehicles N] [--orders M] [--seed S] [--virtual-time]
         |                     [--set key=value]...                 benchmark the kernel with simulated vehicles
+        |       ktcs bench [demo | batch] [--model FILE] [--runs N] [--url URL [--pid PID]] [--orders N] ...
+        |                                                          measure a running kTCS through its web API
+        |                                                          (ktcs bench --help lists every option)
         |       ktcs --help | --version
         |
         |Without --model, kTCS loads its demo plant. Without --config, it reads config/ktcs.conf if that exists.
@@ -74,6 +84,12 @@ object CommandLine {
         "model" -> parseModelCommand(args.drop(1))
 
         "simulate" -> Command.Simulate(parseSimulateOptions(args.drop(1)))
+
+        "bench" -> if (args.drop(1).any { it == "--help" || it == "-h" }) {
+            Command.BenchHelp
+        } else {
+            Command.Bench(parseBenchOptions(args.drop(1)))
+        }
 
         "-h", "--help", "help" -> Command.Help
 
@@ -146,6 +162,100 @@ object CommandLine {
             handle(name) { inline ?: if (rest.hasNext()) rest.next() else throw UsageException("$name needs a value") }
         }
     }
+
+    val benchUsage: String = """
+        |Usage: ktcs bench [demo | batch] [options]
+        |  demo    start-up, memory, kernel CPU per finished order (--cpu-batches), order creation with 1 and 8
+        |          clients (--posts each), GET /v1/transportOrders with --pool orders (issue #12's workload)
+        |  batch   --orders orders posted at once; finished/failed, CPU per order, makespan and its lower bound,
+        |          assignment latency, deadlock notifications, double allocations and shared positions
+        |Options:
+        |  --model FILE          plant the orders come from and the started kTCS loads (default: the demo plant)
+        |  --grid WxH            a generated one-way grid plant instead of --model (as ktcs simulate --grid)
+        |  --vehicles N          vehicles of the started kTCS, each placed on a free point (default: the model's)
+        |  --runs N              runs, each with a fresh kTCS; figures print as median (min, max) (default 1)
+        |  --url URL             measure a kTCS that runs already (e.g. http://127.0.0.1:55200) instead of starting one
+        |  --pid PID             its process id, for CPU and memory figures
+        |  --launcher FILE       the ktcs launcher to start (default ./ktcs), always with --no-build
+        |  --port N              web port of the started kTCS (default: a free one)
+        |  --time-factor F       loopback.timeFactor of the started kTCS (default 100)
+        |  --set key=value       a further setting for the started kTCS
+        |  --seed S              seed of the random orders (default 1)
+        |  --cpu-batches N,M     demo: batch sizes for CPU per finished order (default 50,200)
+        |  --posts N             demo: POSTs per creation measurement (default 500)
+        |  --pool N              demo: orders in the pool when listing them (default 3570)
+        |  --gets N              demo: GET requests timed (default 50)
+        |  --orders N            batch: orders posted at once (default 200)
+        |  --operating-time MS   batch: simulated ms per operation, for the lower bound (default 5000)
+        |  --stall-timeout S     seconds without a finished order that end a run (default 60)
+    """.trimMargin()
+
+    private fun parseBenchOptions(args: List<String>): BenchOptions {
+        var options = BenchOptions()
+        val rest = when (args.firstOrNull()) {
+            "demo" -> args.drop(1)
+            "batch" -> args.drop(1).also { options = options.copy(workload = Workload.BATCH) }
+            else -> args
+        }
+        forEachOption(rest) { name, value ->
+            options = when (name) {
+                "--model" -> options.copy(model = Path.of(value()))
+
+                "--grid" -> options.copy(grid = parseGrid(value()))
+
+                "--runs" -> options.copy(runs = positive(name, value()))
+
+                "--vehicles" -> options.copy(vehicles = positive(name, value()))
+
+                "--url" -> options.copy(url = value())
+
+                "--pid" -> options.copy(pid = positive(name, value()).toLong())
+
+                "--launcher" -> options.copy(launcher = Path.of(value()))
+
+                "--port" -> options.copy(port = positive(name, value()))
+
+                "--time-factor" -> options.copy(timeFactor = positiveDecimal(name, value()))
+
+                "--set" -> options.copy(settings = options.settings + value())
+
+                "--seed" -> options.copy(
+                    seed =
+                    value().toLongOrNull() ?: throw UsageException("--seed expects a whole number"),
+                )
+
+                "--cpu-batches" -> options.copy(cpuBatches = value().split(',').map { positive(name, it.trim()) })
+
+                "--posts" -> options.copy(posts = positive(name, value()))
+
+                "--pool" -> options.copy(poolSize = positive(name, value()))
+
+                "--gets" -> options.copy(gets = positive(name, value()))
+
+                "--orders" -> options.copy(orders = positive(name, value()))
+
+                "--operating-time" -> options.copy(operatingMillis = positive(name, value()).toLong())
+
+                "--stall-timeout" -> options.copy(stallSeconds = positiveDecimal(name, value()))
+
+                else -> throw UsageException("unknown bench option '$name' (ktcs bench --help lists them)")
+            }
+        }
+        if (options.model != null &&
+            options.grid != null
+        ) {
+            throw UsageException("give either --model or --grid, not both")
+        }
+        if (options.url != null &&
+            options.grid != null
+        ) {
+            throw UsageException("--grid builds a plant for a kTCS the bench starts; not with --url")
+        }
+        return options
+    }
+
+    private fun positiveDecimal(name: String, text: String): Double =
+        text.toDoubleOrNull()?.takeIf { it > 0 } ?: throw UsageException("$name expects a positive number, got '$text'")
 
     private fun parseGrid(text: String): Pair<Int, Int> {
         val parts = text.lowercase().split('x')

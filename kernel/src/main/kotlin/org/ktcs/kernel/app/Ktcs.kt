@@ -1,5 +1,6 @@
 package org.ktcs.kernel.app
 
+import org.ktcs.kernel.bench.Bench
 import org.ktcs.kernel.config.ConfigException
 import org.ktcs.kernel.config.ConfigFile
 import org.ktcs.kernel.config.ConfigLoader
@@ -17,6 +18,8 @@ import org.ktcs.kernel.web.KernelVersion
 import java.io.PrintStream
 import java.nio.file.Files
 import java.nio.file.Path
+import java.util.concurrent.CompletableFuture
+import java.util.concurrent.CompletionException
 
 /** The `ktcs` command: parses the command line, runs one command and returns the process exit code. */
 class Ktcs(private val out: PrintStream, private val err: PrintStream, private val environment: Map<String, String>) {
@@ -29,6 +32,8 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
             is Command.Simulate -> simulate(command.options)
             is Command.CheckModel -> ModelTools(out).check(command.file)
             is Command.ConvertModel -> ModelTools(out).convert(command.input, command.output)
+            is Command.Bench -> Bench(command.options, out, err).run()
+            Command.BenchHelp -> 0.also { out.println(CommandLine.benchUsage) }
             Command.Help -> 0.also { out.println(CommandLine.usage) }
             Command.Version -> 0.also { out.println("kTCS ${KernelVersion.ofThisBuild().version}") }
         }
@@ -44,10 +49,17 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
     private fun runKernel(options: RunOptions, awaitShutdown: (() -> Unit)?): Int {
         val signal = if (awaitShutdown == null) ShutdownSignal.install() else null
         val waitForShutdown = awaitShutdown ?: signal!!::await
+        // Reading the model is most of the start-up's own work (Jackson's Kotlin module reflects on every element
+        // class); it runs while the configuration, logging and extensions are set up.
+        val loading = CompletableFuture.supplyAsync { PlantModelLoader.load(options.model) }
         val config = config(options)
         Logging.apply(config)
-        val model = PlantModelLoader.load(options.model)
         val installed = extensions(config)
+        val model = try {
+            loading.join()
+        } catch (failed: CompletionException) {
+            throw failed.cause ?: failed
+        }
         withContextClassLoader(installed.classLoader) {
             val application =
                 KernelApplication(config, model, installed.extensions, installed::jarOf) { signal?.request() }

@@ -298,7 +298,7 @@ object KtcsSettings {
         "loopback.positionReportInterval",
         500,
         0L..60_000L,
-        "Simulated milliseconds between precise-position reports while driving (0: only at points).",
+        "Milliseconds of real (kernel-clock) time between precise-position reports while driving, whatever loopback.timeFactor (0: only at points).",
     )
     val overviewVehicleTheme = stringSetting(
         "overview.vehicleTheme",

@@ -32,7 +32,8 @@ class DefaultDispatcher(
         SequenceSuccessors(run, availability, checks, deferrals).assign()
         FreeOrderAssignment(run, availability, checks, deferrals).assign()
         handleIdleVehicles(run, availability)
-        deferrals.retainOnly(run.dispatchableOrders.mapTo(HashSet()) { it.name })
+        // Only a run that read the orders knows which are still waiting; the others leave the log as it is.
+        if (run.ordersRead) deferrals.retainOnly(run.dispatchableOrders.mapTo(HashSet()) { it.name })
     }
 
     private fun handleIdleVehicles(run: DispatchRun, availability: VehicleAvailability) {

@@ -13,8 +13,10 @@ import org.slf4j.LoggerFactory
 import java.time.Instant
 
 /**
- * What one dispatch run sees and has done so far. Vehicles and orders are read once at the start; what the run
- * assigns itself is tracked here, so later phases do not depend on when the kernel updates its snapshots.
+ * What one dispatch run sees and has done so far. Vehicles are read at the start, the dispatchable orders when a phase
+ * first needs them (a run in which no vehicle is available never reads them, so creating an order while every
+ * vehicle is busy costs no scan of the waiting orders); what the run assigns itself is tracked here, so later phases
+ * do not depend on when the kernel updates its snapshots.
  */
 internal class DispatchRun(
     val context: DispatchContext,
@@ -24,11 +26,18 @@ internal class DispatchRun(
     val now: Instant = context.clock.now()
     val model: PlantModel = context.plantModel()
     val vehicles: List<Vehicle> = context.vehicles().toList()
-    val dispatchableOrders: List<TransportOrder> = context.dispatchableOrders().toList()
+    val dispatchableOrders: List<TransportOrder> by lazy {
+        ordersRead = true
+        context.dispatchableOrders().toList()
+    }
+
+    /** Whether this run has read the dispatchable orders. */
+    var ordersRead: Boolean = false
+        private set
     val routes = RouteCache(context.router)
     val priorities = Priorities(configuration, now)
 
-    private val orders = HashMap<String, TransportOrder?>(dispatchableOrders.associateBy { it.name })
+    private val orders = HashMap<String, TransportOrder?>()
     private val sequences = HashMap<String, OrderSequence?>()
     private val assignedVehicles = HashSet<String>()
     private val assignedOrders = HashSet<String>()

@@ -28,10 +28,12 @@ class DefaultRouter(private val configuration: RouterConfiguration = RouterConfi
     /**
      * Whether some vehicle that may take [order] (its intended vehicle, else any) could route it in principle, on the
      * paths it may drive and around the order's `tcs:resourcesToAvoid`; locks are ignored, as they are temporary.
+     * Answered from the plant's strongly connected components first; only orders that pass that are checked per kind
+     * of vehicle.
      */
     override fun isGenerallyRoutable(order: TransportOrder): Boolean {
         val legs = legCandidates(order, includeLockedLocations = true)
-        if (!isRoutableInPrinciple(graphs.general, legs)) return false
+        if (!isRoutableInPrinciple(graphs.generalReachability, legs)) return false
         val avoided = AvoidedResources.of(
             graphs.model,
             parseResourceNames(order.properties[RESOURCES_TO_AVOID_PROPERTY]),
@@ -41,10 +43,10 @@ class DefaultRouter(private val configuration: RouterConfiguration = RouterConfi
         val vehicles = order.intendedVehicle?.let { listOfNotNull(graphs.model.vehicle(it)) } ?: graphs.model.vehicles
         if (vehicles.isEmpty()) {
             return avoided.isEmpty() ||
-                isRoutableInPrinciple(graphs.general.without(avoided), usableLegs)
+                isRoutableInPrinciple(Reachability(graphs.general.without(avoided)), usableLegs)
         }
         return vehicles.map(configuration::graphKeyOf).distinct().any { key ->
-            isRoutableInPrinciple(graphs.generalFor(key).without(avoided), usableLegs)
+            isRoutableInPrinciple(graphs.reachabilityFor(key, avoided), usableLegs)
         }
     }
 

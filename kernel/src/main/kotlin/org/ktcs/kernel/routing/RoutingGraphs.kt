@@ -9,12 +9,26 @@ import org.ktcs.api.model.PlantModel
 internal class RoutingGraphs(val model: PlantModel, private val configuration: RouterConfiguration) {
     private val searches = HashMap<GraphKey, RouteSearch>()
     private val generalByKey = HashMap<GraphKey, RoutingGraph>()
+    private val reachabilityByKey = HashMap<GraphKey, Reachability>()
 
     /** Every drivable path direction, locked or not, at cost 1: what general routability asks about. */
     val general: RoutingGraph by lazy { buildRoutingGraph(model, includeLocked = true) { _, _ -> 1 } }
 
-    /** Every path direction vehicles of [key] may drive, locked or not: what they could route in principle. */
-    fun generalFor(key: GraphKey): RoutingGraph = generalByKey.getOrPut(key) {
+    /** Reachability in [general], from its strongly connected components: built once per model, on first use. */
+    val generalReachability: Reachability by lazy { Reachability(general) }
+
+    /**
+     * Reachability on the path directions vehicles of [key] may drive, locked or not, around [avoided]: kept per key
+     * while nothing is avoided, computed for the order otherwise.
+     */
+    fun reachabilityFor(key: GraphKey, avoided: AvoidedResources): Reachability =
+        if (avoided.isEmpty()) {
+            reachabilityByKey.getOrPut(key) { Reachability(generalFor(key)) }
+        } else {
+            Reachability(generalFor(key).without(avoided))
+        }
+
+    private fun generalFor(key: GraphKey): RoutingGraph = generalByKey.getOrPut(key) {
         val costs = EdgeCosts(model, configuration, key)
         buildRoutingGraph(model, includeLocked = true, costs::of)
     }

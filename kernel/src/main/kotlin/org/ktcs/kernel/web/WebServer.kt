@@ -144,7 +144,7 @@ fun Application.webModule(
     launch { feed(statusEvents, services) }
     val webSockets = LiveWebSockets()
     monitor.subscribe(ApplicationStopPreparing) { webSockets.closeAll() }
-    val document = ApiDocument.current
+    val document = lazy { ApiDocument.current }
     routing {
         contributions.forEach { it.install(this) }
         docsRoutes(document)

@@ -4,6 +4,8 @@ import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.datatest.withData
 import io.kotest.matchers.shouldBe
+import org.ktcs.kernel.bench.BenchOptions
+import org.ktcs.kernel.bench.Workload
 import java.nio.file.Path
 
 class CommandLineTest : FunSpec({
@@ -31,6 +33,17 @@ class CommandLineTest : FunSpec({
             Command.ConvertModel(Path.of("in.xml"), Path.of("out.xml"))
     }
 
+    test("bench: a workload and its options") {
+        CommandLine.parse(listOf("bench")) shouldBe Command.Bench(BenchOptions())
+        CommandLine.parse(listOf("bench", "batch", "--grid", "10x10", "--vehicles", "10", "--orders=50")) shouldBe
+            Command.Bench(BenchOptions(workload = Workload.BATCH, grid = 10 to 10, vehicles = 10, orders = 50))
+        CommandLine.parse(
+            listOf("bench", "demo", "--runs", "3", "--cpu-batches", "5,20", "--time-factor", "10"),
+        ) shouldBe
+            Command.Bench(BenchOptions(runs = 3, cpuBatches = listOf(5, 20), timeFactor = 10.0))
+        CommandLine.parse(listOf("bench", "--help")) shouldBe Command.BenchHelp
+    }
+
     context("mistakes get a one-line message") {
         withData(
             listOf("--modle", "x") to "unknown option '--modle'",
@@ -40,6 +53,9 @@ class CommandLineTest : FunSpec({
             listOf("model", "check") to "expected 'model check FILE', got 0 argument(s)",
             listOf("model", "convert", "a") to "expected 'model convert IN OUT', got 1 argument(s)",
             listOf("simulate2") to "unknown command 'simulate2'",
+            listOf("bench", "--runs", "0") to "--runs expects a positive whole number, got '0'",
+            listOf("bench", "--model", "a.xml", "--grid", "5x5") to "give either --model or --grid, not both",
+            listOf("bench", "--speed", "1") to "unknown bench option '--speed' (ktcs bench --help lists them)",
         ) { (args, message) ->
             shouldThrow<UsageException> { CommandLine.parse(args) }.message shouldBe message
         }

@@ -45,7 +45,10 @@ internal class StatusChannelServer(private val messages: StatusMessages, private
             log.warn("XML status channel: subscribing to kernel events again after: {}", error.message)
             delay(RESUBSCRIBE_DELAY)
             true
-        }.collect { event -> render(event)?.let { send(it.toByteArray(Charsets.UTF_8)) } }
+        }.collect { event ->
+            // Rendering XML is the expensive part: with nobody connected there is nobody to render it for.
+            if (clients.isNotEmpty()) render(event)?.let { send(it.toByteArray(Charsets.UTF_8)) }
+        }
     }
 
     /** One event that cannot be rendered (kernel checks names, but extensions may not) is skipped, not fatal. */

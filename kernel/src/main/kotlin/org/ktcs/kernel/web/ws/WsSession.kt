@@ -32,6 +32,7 @@ class WsSession(
     private val json = V1Json.json
     private var topics = emptySet<WsTopic>()
     private var sequence = 0L
+    private val encoded = EncodedObjects()
 
     suspend fun run() = coroutineScope {
         var feed: Job? = null
@@ -110,12 +111,18 @@ class WsSession(
     }
 
     private suspend fun forward(event: KernelEvent) {
-        val change = WsTopics.change(event) ?: return
-        if (change.topic in topics) send(WsEvent(change.topic.wireName, sequence++, change.previous, change.current))
+        // Encoding is the costly part: events of topics the client did not ask for are not encoded at all.
+        if (WsTopics.topicOf(event) !in topics) return
+        val change = WsTopics.change(event, encoded) ?: return
+        sendText(change.eventText(sequence++))
     }
 
-    private suspend fun send(message: WsServerMessage) {
-        socket.send(Frame.Text(json.encodeToString(WsServerMessage.serializer(), message)))
+    private suspend fun send(message: WsServerMessage) = sendText(
+        json.encodeToString(WsServerMessage.serializer(), message),
+    )
+
+    private suspend fun sendText(text: String) {
+        socket.send(Frame.Text(text))
         // Sending only queues the frame, without limit; waiting for it to be written is what lets a client that
         // reads slowly hold this session up, so that its event buffer fills and it is told it missed events.
         socket.flush()

@@ -1,5 +1,6 @@
 package org.ktcs.kernel.web.ws
 
+import kotlinx.serialization.encodeToString
 import kotlinx.serialization.json.JsonElement
 import kotlinx.serialization.json.encodeToJsonElement
 import org.ktcs.api.event.KernelEvent
@@ -11,6 +12,8 @@ import org.ktcs.api.event.TransportOrderEvent
 import org.ktcs.api.event.UserNotification
 import org.ktcs.api.event.UserNotificationEvent
 import org.ktcs.api.event.VehicleEvent
+import org.ktcs.api.model.Vehicle
+import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.web.v1.V1Json
 import org.ktcs.kernel.web.v1.events.toSseDto
@@ -37,32 +40,81 @@ internal object WsTopics {
         WsTopic.NOTIFICATIONS -> services.notifications.notifications().map { json.encodeToJsonElement(it.toDto()) }
     }
 
-    /** The topic and the previous/current state of [event] on the wire, or `null` for events no topic carries. */
-    fun change(event: KernelEvent): Change? = when (event) {
-        is VehicleEvent -> Change.of(WsTopic.VEHICLES, event) { json.encodeToJsonElement(it.toSseDto()) }
+    /** The topic that carries [event], or `null` if none does; tells whether [change] is needed at all. */
+    fun topicOf(event: KernelEvent): WsTopic? = when (event) {
+        is VehicleEvent -> WsTopic.VEHICLES
+        is TransportOrderEvent -> WsTopic.TRANSPORT_ORDERS
+        is OrderSequenceEvent -> WsTopic.ORDER_SEQUENCES
+        is PathEvent, is LocationEvent -> WsTopic.PLANT_MODEL
+        is UserNotificationEvent -> WsTopic.NOTIFICATIONS
+        else -> null
+    }
 
-        is TransportOrderEvent -> Change.of(WsTopic.TRANSPORT_ORDERS, event) { json.encodeToJsonElement(it.toSseDto()) }
+    /**
+     * The topic and the previous/current state of [event] as JSON text, or `null` for events no topic carries.
+     * [encoded] keeps the last encoded states of vehicles and orders, which are the next events' previous states.
+     */
+    fun change(event: KernelEvent, encoded: EncodedObjects = EncodedObjects()): Change? = when (event) {
+        is VehicleEvent -> Change.of(WsTopic.VEHICLES, event, encoded.vehicles::of)
 
-        is OrderSequenceEvent -> Change.of(WsTopic.ORDER_SEQUENCES, event) { json.encodeToJsonElement(it.toSseDto()) }
+        is TransportOrderEvent -> Change.of(WsTopic.TRANSPORT_ORDERS, event, encoded.orders::of)
 
-        is PathEvent -> Change.of(WsTopic.PLANT_MODEL, event) { json.encodeToJsonElement(it.toDto()) }
+        is OrderSequenceEvent -> Change.of(WsTopic.ORDER_SEQUENCES, event) { json.encodeToString(it.toSseDto()) }
 
-        is LocationEvent -> Change.of(WsTopic.PLANT_MODEL, event) { json.encodeToJsonElement(it.toDto()) }
+        is PathEvent -> Change.of(WsTopic.PLANT_MODEL, event) { json.encodeToString(it.toDto()) }
+
+        is LocationEvent -> Change.of(WsTopic.PLANT_MODEL, event) { json.encodeToString(it.toDto()) }
 
         is UserNotificationEvent -> Change(
             WsTopic.NOTIFICATIONS,
             null,
-            json.encodeToJsonElement(event.notification.toDto()),
+            json.encodeToString(event.notification.toDto()),
         )
 
         else -> null
     }
 }
 
-/** One change of a topic's object, as it goes on the wire. */
-internal data class Change(val topic: WsTopic, val previous: JsonElement?, val current: JsonElement?) {
+/**
+ * The objects' states as last encoded, by identity, for the [capacity] most recently changed objects: a driving
+ * vehicle or an order under way changes many times a second, and the state an event reports as previous is the one
+ * the event before reported as current, so each state is encoded once instead of twice.
+ */
+internal class LastEncoded<T : Any>(
+    private val capacity: Int,
+    private val nameOf: (T) -> String,
+    private val encode: (T) -> String,
+) {
+    private val last = object : LinkedHashMap<String, Pair<T, String>>(16, 0.75f, true) {
+        override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, Pair<T, String>>) = size > capacity
+    }
+
+    fun of(value: T): String {
+        val name = nameOf(value)
+        last[name]?.takeIf { it.first === value }?.let { return it.second }
+        return encode(value).also { last[name] = value to it }
+    }
+}
+
+/** A WebSocket session's [LastEncoded] vehicles and transport orders. */
+internal class EncodedObjects(capacity: Int = DEFAULT_CAPACITY) {
+    val vehicles = LastEncoded<Vehicle>(capacity, { it.name }) { V1Json.json.encodeToString(it.toSseDto()) }
+    val orders = LastEncoded<TransportOrder>(capacity, { it.name }) { V1Json.json.encodeToString(it.toSseDto()) }
+
+    private companion object {
+        const val DEFAULT_CAPACITY = 512
+    }
+}
+
+/** One change of a topic's object, its states as the JSON text that goes on the wire. */
+internal data class Change(val topic: WsTopic, val previous: String?, val current: String?) {
+    /** The [WsEvent] message numbered [seq] as JSON text, put together from the states' texts. */
+    fun eventText(seq: Long): String =
+        """{"type":"event","topic":"${topic.wireName}","seq":$seq,"previous":${previous ?: "null"},""" +
+            """"current":${current ?: "null"},"v":$WS_PROTOCOL_VERSION}"""
+
     companion object {
-        fun <T : Any> of(topic: WsTopic, event: ObjectEvent<T>, encode: (T) -> JsonElement) =
+        fun <T : Any> of(topic: WsTopic, event: ObjectEvent<T>, encode: (T) -> String) =
             Change(topic, event.previous?.let(encode), event.current?.let(encode))
     }
 }

@@ -7,6 +7,7 @@ import org.ktcs.api.event.KernelEvent
 import org.ktcs.api.event.TransportOrderEvent
 import org.ktcs.api.event.VehicleEvent
 import java.time.Clock
+import java.time.Instant
 
 /**
  * The most recent status messages for `GET /events` (openTCS's long polling): one per transport-order and vehicle
@@ -14,24 +15,24 @@ import java.time.Clock
  * by one collector of the kernel's events, read by any number of requests.
  */
 class StatusEventBuffer(private val capacity: Int = 1000, private val clock: Clock = Clock.systemUTC()) {
-    private val messages = ArrayDeque<StatusMessage>()
+    /** An event kept with its number and time; it becomes a status message only when a client asks for it. */
+    private class Entry(val sequenceNumber: Long, val createdAt: Instant, val event: KernelEvent)
+
+    private val entries = ArrayDeque<Entry>()
     private var nextSequenceNumber = 0L
     private val newest = MutableStateFlow(-1L)
 
     fun add(event: KernelEvent) {
-        val message = synchronized(this) {
-            val sequence = nextSequenceNumber
-            val message = when (event) {
-                is TransportOrderEvent -> event.current?.toStatusMessage(sequence, clock.instant())
-                is VehicleEvent -> event.current?.toStatusMessage(sequence, clock.instant())
-                else -> null
-            } ?: return
-            nextSequenceNumber++
-            if (messages.size == capacity) messages.removeFirst()
-            messages.addLast(message)
-            message
+        val isStatus = (event is TransportOrderEvent && event.current != null) ||
+            (event is VehicleEvent && event.current != null)
+        if (!isStatus) return
+        val sequence = synchronized(this) {
+            val sequence = nextSequenceNumber++
+            if (entries.size == capacity) entries.removeFirst()
+            entries.addLast(Entry(sequence, clock.instant(), event))
+            sequence
         }
-        newest.value = message.sequenceNumber
+        newest.value = sequence
     }
 
     /** The messages numbered [min]..[max], waiting up to [timeoutMillis] for the first one if there is none yet. */
@@ -42,6 +43,12 @@ class StatusEventBuffer(private val capacity: Int = 1000, private val clock: Clo
     }
 
     private fun between(min: Long, max: Long): List<StatusMessage> = synchronized(this) {
-        messages.filter { it.sequenceNumber in min..max }
+        entries.filter { it.sequenceNumber in min..max }
+    }.map { it.toStatusMessage() }
+
+    private fun Entry.toStatusMessage(): StatusMessage = when (event) {
+        is TransportOrderEvent -> event.current!!.toStatusMessage(sequenceNumber, createdAt)
+        is VehicleEvent -> event.current!!.toStatusMessage(sequenceNumber, createdAt)
+        else -> error("only order and vehicle events are kept")
     }
 }

@@ -1,7 +1,10 @@
 package org.ktcs.kernel.web.v1.orders
 
+import io.ktor.http.ContentType
 import io.ktor.http.HttpStatusCode
+import io.ktor.http.withCharset
 import io.ktor.server.response.respond
+import io.ktor.server.response.respondBytes
 import io.ktor.server.routing.Route
 import io.ktor.server.routing.get
 import io.ktor.server.routing.post
@@ -13,11 +16,17 @@ import org.ktcs.kernel.web.v1.booleanQuery
 import org.ktcs.kernel.web.v1.pathName
 import org.ktcs.kernel.web.v1.receiveJson
 
-/** `/transportOrders`: list, read, create, withdraw, assign now, change the intended vehicle. */
-fun Route.transportOrderRoutes(services: KernelServices) = route("/transportOrders") {
+/**
+ * `/transportOrders`: list, read, create, withdraw, assign now, change the intended vehicle. Orders are written from
+ * [json], which encodes each order version once.
+ */
+fun Route.transportOrderRoutes(services: KernelServices, json: TransportOrderJson = TransportOrderJson()) = route(
+    "/transportOrders",
+) {
     get {
         val vehicle = services.knownVehicle(call.request.queryParameters["intendedVehicle"])
-        call.respond(services.transportOrders.transportOrders(vehicle).map { it.toDto() })
+        val orders = services.transportOrders.transportOrders(vehicle)
+        call.respondBytes(json.list(orders, wholePool = vehicle == null), JSON_UTF8)
     }
     post("/dispatcher/trigger") {
         services.dispatcher.dispatch()
@@ -29,11 +38,12 @@ fun Route.transportOrderRoutes(services: KernelServices) = route("/transportOrde
             val order =
                 services.transportOrders.transportOrder(name)
                     ?: throw ObjectUnknownException("unknown transport order '$name'")
-            call.respond(order.toDto())
+            call.respondBytes(json.of(order), JSON_UTF8)
         }
         post {
             val request = call.receiveJson<PostTransportOrderRequest>()
-            call.respond(services.transportOrders.createTransportOrder(request.toDomain(call.pathName())).toDto())
+            val created = services.transportOrders.createTransportOrder(request.toDomain(call.pathName()))
+            call.respondBytes(json.of(created), JSON_UTF8)
         }
         post("/withdrawal") {
             services.dispatcher.withdrawByTransportOrder(
@@ -58,6 +68,8 @@ fun Route.transportOrderRoutes(services: KernelServices) = route("/transportOrde
         }
     }
 }
+
+private val JSON_UTF8 = ContentType.Application.Json.withCharset(Charsets.UTF_8)
 
 /** `/orderSequences`: list, read, create, mark complete. */
 fun Route.orderSequenceRoutes(services: KernelServices) = route("/orderSequences") {

@@ -1,0 +1,83 @@
+package org.ktcs.kernel.bench
+
+/**
+ * The workload of issue #11 on any plant: [BenchOptions.orders] orders posted at once, run until every one is final
+ * or none finished for [BenchOptions.stallSeconds]; the makespan next to its lower bound, what the kernel spent per
+ * finished order, how long orders waited for a vehicle, and what the event stream showed of the traffic rules.
+ */
+class BatchWorkload(private val options: BenchOptions, private val figures: Figures) {
+    fun run(ktcs: KtcsUnderTest, orders: BenchOrders, bound: LowerBound, prefix: String) {
+        val vehicles = ktcs.client.vehicles().orEmpty().count { it.string("integrationLevel") == "TO_BE_UTILIZED" }
+        val batch = orders.next("$prefix-", options.orders)
+        EventWatcher(ktcs.client).use { watcher ->
+            val stats = ktcs.stats
+            val cpuStart = stats?.cpuSeconds()
+            val threadStart = stats?.threadCpuSeconds(DemoWorkload.KERNEL_THREAD)
+            val start = System.nanoTime()
+            OrderPosting.post(ktcs.client, batch, DemoWorkload.CONCURRENT_CLIENTS)
+            val end = awaitBatch(watcher, prefix)
+            val states = watcher.states(prefix)
+            val finished = states.values.count { it == "FINISHED" }
+            figures.record("vehicles", vehicles.toDouble())
+            figures.record("orders_posted", batch.size.toDouble())
+            figures.record("orders_finished", finished.toDouble())
+            figures.record("orders_failed", states.values.count { it == "FAILED" || it == "UNROUTABLE" }.toDouble())
+            if (stats != null && finished > 0) {
+                figures.record("kernel_cpu_per_order_ms", (stats.cpuSeconds() - cpuStart!!) * MILLIS / finished)
+                stats.threadCpuSeconds(DemoWorkload.KERNEL_THREAD)?.let { thread ->
+                    threadStart?.let {
+                        figures.record(
+                            "kernel_thread_cpu_per_order_ms",
+                            (thread - it) * MILLIS / finished,
+                        )
+                    }
+                }
+            }
+            val wall = (end - start) / OrderPosting.NANOS_PER_SECOND
+            figures.record("makespan_wall_s", wall)
+            figures.record("makespan_simulated_s", wall * options.timeFactor)
+            figures.record("lower_bound_simulated_s", bound.seconds(batch, vehicles))
+            val latencies = watcher.assignLatenciesMillis()
+            figures.record("assign_latency_p50_ms", quantile(latencies, MEDIAN))
+            figures.record("assign_latency_p99_ms", quantile(latencies, P99))
+            figures.record("deadlock_notifications", watcher.deadlockNotifications().toDouble())
+            figures.record("double_allocations", watcher.doubleAllocations().toDouble())
+            figures.record("shared_positions", watcher.sharedPositions().toDouble())
+            figures.record("event_stream_missed", watcher.missedEvents().toDouble())
+            figures.record("rss_end_mib", stats?.rssMib())
+        }
+    }
+
+    /** Waits until every order of the batch is final or none became final for a while; returns when it stopped. */
+    private fun awaitBatch(watcher: EventWatcher, prefix: String): Long {
+        var finalCount = -1
+        var lastProgress = System.nanoTime()
+        var lastFinal = lastProgress
+        while (true) {
+            val states = watcher.states(prefix)
+            val final = states.values.count { it in OrderPosting.FINAL_STATES }
+            val now = System.nanoTime()
+            if (final != finalCount) {
+                finalCount = final
+                lastProgress = now
+                lastFinal = now
+            }
+            if (final >= options.orders) return lastFinal
+            if ((now - lastProgress) / OrderPosting.NANOS_PER_SECOND > options.stallSeconds) {
+                figures.note(
+                    "stalled",
+                    "no order finished for ${options.stallSeconds} s; $final of ${options.orders} final",
+                )
+                return lastFinal
+            }
+            Thread.sleep(POLL_MILLIS)
+        }
+    }
+
+    private companion object {
+        const val MILLIS = 1000.0
+        const val MEDIAN = 0.5
+        const val P99 = 0.99
+        const val POLL_MILLIS = 10L
+    }
+}

@@ -1,0 +1,75 @@
+package org.ktcs.kernel.bench
+
+/**
+ * The workload of issue #12, as openTCS was measured with it: start-up, memory, kernel CPU per finished order for a
+ * small and a larger batch, order creation with one and with eight clients, and listing a full order pool.
+ */
+class DemoWorkload(private val options: BenchOptions, private val figures: Figures) {
+    fun run(ktcs: KtcsUnderTest, orders: BenchOrders, prefix: String) {
+        if (options.url == null) figures.record("launch_ready_s", ktcs.readySeconds)
+        figures.record("rss_ready_mib", ktcs.stats?.rssMib())
+        options.cpuBatches.forEach { size -> cpuPerOrder(ktcs, orders.next("$prefix-cpu$size-", size), size) }
+        val single = OrderPosting.post(ktcs.client, orders.next("$prefix-c1-", options.posts), 1)
+        record("create_1_client", single)
+        figures.record("post_p50_ms", quantile(single.latenciesMillis, MEDIAN))
+        val eight = OrderPosting.post(ktcs.client, orders.next("$prefix-c8-", options.posts), CONCURRENT_CLIENTS)
+        record("create_8_clients", eight)
+        val pool = countOrders(ktcs)
+        if (pool < options.poolSize) {
+            OrderPosting.post(ktcs.client, orders.next("$prefix-fill-", options.poolSize - pool), CONCURRENT_CLIENTS)
+        }
+        listOrders(ktcs)
+        figures.record("rss_end_mib", ktcs.stats?.rssMib())
+    }
+
+    private fun cpuPerOrder(ktcs: KtcsUnderTest, batch: List<BenchOrder>, size: Int) {
+        val stats = ktcs.stats
+        val cpuStart = stats?.cpuSeconds()
+        val threadStart = stats?.threadCpuSeconds(KERNEL_THREAD)
+        val wallStart = System.nanoTime()
+        OrderPosting.post(ktcs.client, batch, 1)
+        val states = OrderPosting.awaitFinal(ktcs.client, batch.map { it.name }, options.stallSeconds)
+        val finished = states.values.count { it == "FINISHED" }
+        figures.record("orders_${size}_finished", finished.toDouble())
+        figures.record("orders_${size}_wall_s", (System.nanoTime() - wallStart) / OrderPosting.NANOS_PER_SECOND)
+        if (stats == null || finished == 0) return
+        figures.record("kernel_cpu_per_order_${size}_ms", (stats.cpuSeconds() - cpuStart!!) * MILLIS / finished)
+        val thread = stats.threadCpuSeconds(KERNEL_THREAD)
+        if (thread != null && threadStart != null) {
+            figures.record("kernel_thread_cpu_per_order_${size}_ms", (thread - threadStart) * MILLIS / finished)
+        }
+    }
+
+    private fun record(name: String, result: PostingResult) {
+        figures.record("${name}_per_s", result.perSecond)
+        figures.record("${name}_client_cpu_s", result.clientCpuSeconds)
+        // 1.0 means the client kept one of the machine's cores busy: a rate it may have limited itself.
+        figures.record("${name}_client_cpu_share", result.clientCpuSeconds / result.wallSeconds)
+    }
+
+    private fun listOrders(ktcs: KtcsUnderTest) {
+        val latencies = ArrayList<Double>()
+        var bytes = 0L
+        repeat(options.gets) {
+            val start = System.nanoTime()
+            bytes = ktcs.client.getDiscarding("/transportOrders")
+            latencies += (System.nanoTime() - start) / OrderPosting.NANOS_PER_MILLI
+        }
+        figures.record("get_orders_pool", countOrders(ktcs).toDouble())
+        figures.record("get_orders_bytes", bytes.toDouble())
+        figures.record("get_orders_p50_ms", quantile(latencies, MEDIAN))
+        figures.record("get_orders_p95_ms", quantile(latencies, P95))
+    }
+
+    private fun countOrders(ktcs: KtcsUnderTest): Int =
+        ktcs.client.get("/transportOrders")?.let { kotlinx.serialization.json.Json.parseToJsonElement(it) }
+            ?.let { (it as kotlinx.serialization.json.JsonArray).size } ?: 0
+
+    companion object {
+        const val KERNEL_THREAD = "kernel"
+        const val CONCURRENT_CLIENTS = 8
+        private const val MILLIS = 1000.0
+        private const val MEDIAN = 0.5
+        private const val P95 = 0.95
+    }
+}

@@ -1,0 +1,154 @@
+package org.ktcs.kernel.bench
+
+import kotlinx.serialization.json.Json
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
+import kotlinx.serialization.json.jsonObject
+import java.net.http.WebSocket
+import java.util.concurrent.CompletionStage
+import java.util.concurrent.TimeUnit
+
+/**
+ * Follows kTCS's WebSocket (`/v1/ws`: vehicles, transport orders, notifications) and keeps what the batch workload
+ * reports: each order's state and when it became dispatchable and was assigned, deadlock notifications, and every
+ * moment in which a resource was allocated to two vehicles or two vehicles stood on one point, checked after each
+ * vehicle event in kernel order.
+ */
+class EventWatcher(client: BenchClient) : AutoCloseable {
+    private val lock = Object()
+    private val orderStates = HashMap<String, String>()
+    private val dispatchableAt = HashMap<String, Long>()
+    private val assignLatencies = ArrayList<Double>()
+    private val allocations = HashMap<String, Set<String>>()
+    private val positions = HashMap<String, String?>()
+    private val conflicts = HashSet<String>()
+    private val sharedPositions = HashSet<String>()
+    private var deadlocks = 0
+    private var missed = 0
+    private val text = StringBuilder()
+    private val socket: WebSocket = client.httpClient().newWebSocketBuilder()
+        .buildAsync(client.webSocketUri(), Listener())
+        .get(CONNECT_SECONDS, TimeUnit.SECONDS)
+        .also { it.sendText("""{"type":"subscribe","topics":["vehicles","transportOrders","notifications"]}""", true) }
+
+    /** The states of the orders whose names start with [prefix]. */
+    fun states(
+        prefix: String,
+    ): Map<String, String> = synchronized(lock) { orderStates.filterKeys { it.startsWith(prefix) } }
+
+    fun assignLatenciesMillis(): List<Double> = synchronized(lock) { assignLatencies.toList() }
+
+    fun doubleAllocations(): Int = synchronized(lock) { conflicts.size }
+
+    fun sharedPositions(): Int = synchronized(lock) { sharedPositions.size }
+
+    fun deadlockNotifications(): Int = synchronized(lock) { deadlocks }
+
+    /** How often kTCS said the bench fell behind and sent fresh snapshots (latencies of those moments are lost). */
+    fun missedEvents(): Int = synchronized(lock) { missed }
+
+    override fun close() {
+        runCatching { socket.sendClose(WebSocket.NORMAL_CLOSURE, "done").get(CONNECT_SECONDS, TimeUnit.SECONDS) }
+        socket.abort()
+    }
+
+    private fun onMessage(message: JsonObject) = synchronized(lock) {
+        when (message.string("type")) {
+            "snapshot" -> onSnapshot(message.string("topic"), message.array("objects").map { it.jsonObject })
+
+            "event" -> update(
+                message.string("topic"),
+                message["current"] as? JsonObject,
+                message["previous"] as? JsonObject,
+            )
+
+            "missed" -> missed++
+        }
+    }
+
+    /**
+     * A snapshot replaces what the bench knew of its topic all at once: checking its vehicles one by one against
+     * the others' older state would report conflicts that never existed.
+     */
+    private fun onSnapshot(topic: String?, objects: List<JsonObject>) {
+        if (topic != "vehicles") return objects.forEach { update(topic, it, null) }
+        allocations.clear()
+        positions.clear()
+        objects.forEach { vehicle ->
+            val name = vehicle.string("name") ?: return@forEach
+            allocations[name] = vehicle.heldResources()
+            positions[name] = vehicle.string("currentPosition")
+        }
+        allocations.keys.forEach(::checkConflicts)
+    }
+
+    private fun update(topic: String?, current: JsonObject?, previous: JsonObject?) {
+        when (topic) {
+            "transportOrders" -> current?.let(::onOrder)
+            "vehicles" -> current?.let(::onVehicle)
+            "notifications" -> if (previous == null && current?.isDeadlock() == true) deadlocks++
+        }
+    }
+
+    private fun onOrder(order: JsonObject) {
+        val name = order.string("name") ?: return
+        val state = order.string("state") ?: return
+        val before = orderStates.put(name, state)
+        if (state == before) return
+        val now = System.nanoTime()
+        when (state) {
+            "DISPATCHABLE" -> dispatchableAt[name] = now
+
+            "BEING_PROCESSED" -> dispatchableAt.remove(name)?.let {
+                assignLatencies +=
+                    (now - it) / OrderPosting.NANOS_PER_MILLI
+            }
+        }
+    }
+
+    private fun onVehicle(vehicle: JsonObject) {
+        val name = vehicle.string("name") ?: return
+        allocations[name] = vehicle.heldResources()
+        positions[name] = vehicle.string("currentPosition")
+        checkConflicts(name)
+    }
+
+    private fun JsonObject.heldResources(): Set<String> = array("allocatedResources")
+        .flatMap { (it as? JsonArray).orEmpty() }
+        .mapNotNull { (it as? JsonPrimitive)?.content }
+        .toSet()
+
+    /** Records every resource [name] holds that another vehicle holds too, and another vehicle on its point. */
+    private fun checkConflicts(name: String) {
+        val held = allocations[name].orEmpty()
+        allocations.forEach { (other, resources) ->
+            if (other == name) return@forEach
+            resources.intersect(held).forEach { conflicts += "${minOf(name, other)}|${maxOf(name, other)}|$it" }
+        }
+        val position = positions[name] ?: return
+        positions.forEach { (other, at) ->
+            if (other != name && at == position) sharedPositions += "${minOf(name, other)}|${maxOf(name, other)}|$at"
+        }
+    }
+
+    private fun JsonObject.isDeadlock(): Boolean =
+        string("text")?.startsWith("deadlock") == true || string("source")?.contains("deadlock") == true
+
+    private inner class Listener : WebSocket.Listener {
+        override fun onText(webSocket: WebSocket, data: CharSequence, last: Boolean): CompletionStage<*>? {
+            text.append(data)
+            if (last) {
+                val message = text.toString()
+                text.setLength(0)
+                runCatching { Json.parseToJsonElement(message).jsonObject }.getOrNull()?.let(::onMessage)
+            }
+            webSocket.request(1)
+            return null
+        }
+    }
+
+    private companion object {
+        const val CONNECT_SECONDS = 10L
+    }
+}

@@ -1,0 +1,49 @@
+package org.ktcs.kernel.web.v1.orders
+
+import org.ktcs.api.order.TransportOrder
+import org.ktcs.kernel.web.v1.V1Json
+import java.util.concurrent.ConcurrentHashMap
+
+/**
+ * Each transport order's v1 JSON, encoded once per version of the order. Orders are immutable and every change
+ * replaces the pool's instance, so an entry is valid exactly while it was made from the very instance asked about;
+ * listing a pool of thousands of orders then only encodes those that changed since the last request.
+ */
+class TransportOrderJson {
+    private class Entry(val order: TransportOrder, val bytes: ByteArray)
+
+    private val entries = ConcurrentHashMap<String, Entry>()
+
+    /** [order] as `GET /transportOrders/{NAME}` answers it, UTF-8 encoded. */
+    fun of(order: TransportOrder): ByteArray {
+        entries[order.name]?.takeIf { it.order === order }?.let { return it.bytes }
+        val bytes = V1Json.json.encodeToString(TransportOrderDto.serializer(), order.toDto()).encodeToByteArray()
+        entries[order.name] = Entry(order, bytes)
+        return bytes
+    }
+
+    /**
+     * The JSON array of [orders]. When they are the whole pool ([wholePool]), entries of orders no longer in it are
+     * dropped, so removed orders are not kept alive by the cache.
+     */
+    fun list(orders: List<TransportOrder>, wholePool: Boolean): ByteArray {
+        val parts = orders.map(::of)
+        if (wholePool && entries.size > orders.size) {
+            val names = orders.mapTo(HashSet(orders.size * 2)) { it.name }
+            entries.keys.retainAll(names)
+        }
+        val out = ByteArray(parts.sumOf { it.size } + parts.size.coerceAtLeast(1) + 1)
+        var at = 0
+        out[at++] = '['.code.toByte()
+        parts.forEachIndexed { index, part ->
+            if (index > 0) out[at++] = ','.code.toByte()
+            part.copyInto(out, at)
+            at += part.size
+        }
+        out[at++] = ']'.code.toByte()
+        return if (at == out.size) out else out.copyOf(at)
+    }
+
+    /** How many orders are cached (for tests). */
+    val size: Int get() = entries.size
+}

@@ -1,0 +1,60 @@
+package org.ktcs.kernel.web.ws
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.shouldNotBe
+import io.kotest.matchers.string.shouldContain
+import io.kotest.matchers.types.shouldBeSameInstanceAs
+import kotlinx.serialization.encodeToString
+import kotlinx.serialization.json.Json
+import org.ktcs.api.event.VehicleEvent
+import org.ktcs.api.model.Vehicle
+import org.ktcs.kernel.web.v1.V1Json
+import org.ktcs.kernel.web.v1.events.toSseDto
+
+class EncodedObjectsTest : FunSpec({
+    test("an event's previous state reuses the encoding of the event before, and a changed vehicle is encoded anew") {
+        val encoded = EncodedObjects()
+        val parked = Vehicle("Vehicle-01", currentPosition = "Point-0001")
+        val moved = parked.copy(currentPosition = "Point-0002")
+        val first = WsTopics.change(VehicleEvent(null, parked), encoded)!!
+
+        val second = WsTopics.change(VehicleEvent(parked, moved), encoded)!!
+
+        second.previous shouldBeSameInstanceAs first.current
+        second.current shouldBe V1Json.json.encodeToString(moved.toSseDto())
+        second.current shouldNotBe second.previous
+    }
+
+    test("an event put together from the states' texts is the message the serializer writes") {
+        val parked = Vehicle("Vehicle-01", currentPosition = "Point-0001")
+        val change = WsTopics.change(VehicleEvent(parked, parked.copy(currentPosition = null)))!!
+        val serialized = V1Json.json.encodeToString(
+            WsServerMessage.serializer(),
+            WsEvent(
+                "vehicles",
+                7,
+                Json.parseToJsonElement(change.previous!!),
+                Json.parseToJsonElement(change.current!!),
+            ),
+        )
+
+        Json.parseToJsonElement(change.eventText(7)) shouldBe Json.parseToJsonElement(serialized)
+        WsTopics.change(VehicleEvent(null, parked))!!.eventText(8) shouldContain "\"previous\":null,"
+    }
+
+    test("only the most recently changed objects are kept") {
+        var encodings = 0
+        val last = LastEncoded<Vehicle>(2, { it.name }) {
+            encodings++
+            V1Json.json.encodeToString(it.toSseDto())
+        }
+        val vehicles = (1..3).map { Vehicle("Vehicle-0$it") }
+        vehicles.forEach { last.of(it) }
+
+        last.of(vehicles[2])
+        last.of(vehicles[0])
+
+        encodings shouldBe 4
+    }
+})
