@@ -56,7 +56,8 @@ internal class VehicleAvailability(private val run: DispatchRun) {
         }
     }
 
-    private fun occupation(vehicle: Vehicle): String? = when {
+    /** Why [vehicle] cannot take another order while it works on one, or `null` if it can. */
+    fun occupation(vehicle: Vehicle): String? = when {
         isIdle(vehicle) || dispensableOrder(vehicle) != null -> null
         vehicle.transportOrder != null -> "processing order ${vehicle.transportOrder}"
         else -> "procState ${vehicle.procState}, state ${vehicle.state}"

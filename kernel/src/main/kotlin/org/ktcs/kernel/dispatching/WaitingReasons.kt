@@ -7,6 +7,11 @@ import org.ktcs.api.order.TransportOrder
  * Why an order that no vehicle was checked against waits: its intended vehicle, or every vehicle, is unavailable
  * (the reasons [VehicleAvailability] gives) or was given another order in this run. Computed at most once per vehicle
  * and run, and the fleet's reason once per run, so a long queue of waiting orders costs one lookup each.
+ *
+ * The fleet's reason names busy vehicles but not their orders: it is the same for every order waiting without an
+ * intended vehicle, so a reason that changed with every assignment would add a history entry to each of them every
+ * time a vehicle takes its next order (thousands of entries per order in a long queue). A vehicle's own order is in
+ * its details, and an order's intended vehicle is named with its order.
  */
 internal class WaitingReasons(
     private val run: DispatchRun,
@@ -16,8 +21,7 @@ internal class WaitingReasons(
     private val availableNames = available.mapTo(HashSet()) { it.name }
     private val perVehicle = HashMap<String, Refusal>()
     private val fleet: String by lazy {
-        run.vehicles.takeIf { it.isNotEmpty() }?.let { vehicles -> describe(vehicles.map(::refusal)) }
-            ?: "the plant has no vehicles"
+        run.vehicles.takeIf { it.isNotEmpty() }?.let(::describeFleet) ?: "the plant has no vehicles"
     }
 
     /** The reason for [order]; `null` only in a plant without vehicles. */
@@ -26,6 +30,21 @@ internal class WaitingReasons(
         val vehicle = run.vehicles.firstOrNull { it.name == intended }
             ?: return "intended vehicle $intended is unknown"
         return "intended vehicle $intended: ${refusal(vehicle).detail}"
+    }
+
+    private fun describeFleet(vehicles: List<Vehicle>): String {
+        val busy = vehicles.filter { it.name !in availableNames && !run.isAssigned(it) && it.transportOrder != null }
+            .filter { availability.reasons(it).singleOrNull() == availability.occupation(it) }
+        if (busy.size == vehicles.size) return "every vehicle is busy with an order: ${names(busy)}"
+        val others = vehicles.filterNot { it in busy }.map(::refusal)
+        val busyPart = if (busy.isEmpty()) emptyList() else listOf("busy with an order: ${names(busy)}")
+        return (busyPart + describe(others)).joinToString("; ")
+    }
+
+    private fun names(vehicles: List<Vehicle>): String {
+        val sorted = vehicles.map { it.name }.sorted()
+        val shown = sorted.take(MAX_NAMED).joinToString(", ")
+        return if (sorted.size > MAX_NAMED) "$shown and ${sorted.size - MAX_NAMED} more" else shown
     }
 
     private fun refusal(vehicle: Vehicle): Refusal = perVehicle.getOrPut(vehicle.name) {
@@ -37,3 +56,5 @@ internal class WaitingReasons(
         Refusal(vehicle.name, detail, "no vehicle is available: $detail")
     }
 }
+
+private const val MAX_NAMED = 4

@@ -58,14 +58,8 @@ class FakeDispatchContext(var model: PlantModel) : DispatchContext {
 
     override fun vehicles(): Collection<Vehicle> = vehicles.values
 
-    /** How often the dispatcher asked for the dispatchable orders. */
-    var dispatchableReads = 0
-        private set
-
     override fun dispatchableOrders(): Collection<TransportOrder> =
-        orders.values.also {
-            dispatchableReads++
-        }.filter { it.state == TransportOrderState.DISPATCHABLE }.sortedBy { it.creationTime }
+        orders.values.filter { it.state == TransportOrderState.DISPATCHABLE }.sortedBy { it.creationTime }
 
     override fun transportOrder(name: String): TransportOrder? = orders[name]
 

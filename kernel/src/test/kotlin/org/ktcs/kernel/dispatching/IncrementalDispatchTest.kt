@@ -5,14 +5,19 @@ import io.kotest.matchers.shouldBe
 import org.ktcs.api.order.TransportOrderState
 
 class IncrementalDispatchTest : FunSpec({
-    test("a run in which no vehicle is available does not read the waiting orders") {
+    test("while every vehicle stays busy, runs add nothing to the waiting orders' histories") {
         val context = FakeDispatchContext(plant())
+        val dispatcher = context.dispatcher()
         context.add(vehicle("V1").processing("Busy"), order("Busy", state = TransportOrderState.BEING_PROCESSED))
         context.add(*(1..100).map { order("T$it") }.toTypedArray())
+        dispatcher.dispatch()
+        context.deferrals.size shouldBe 100
 
-        context.dispatcher().dispatch()
+        context.add(vehicle("V1").processing("Busy2"), order("Busy2", state = TransportOrderState.BEING_PROCESSED))
+        dispatcher.dispatch()
 
-        context.dispatchableReads shouldBe 0
+        context.deferrals.size shouldBe 100
+        context.deferralsOf("T1") shouldBe listOf("every vehicle is busy with an order: V1")
         context.assignments shouldBe emptyList()
     }
 
@@ -28,6 +33,5 @@ class IncrementalDispatchTest : FunSpec({
         dispatcher.dispatch()
 
         context.assignedOrder("V1") shouldBe "T1"
-        context.dispatchableReads shouldBe 1
     }
 })

@@ -51,12 +51,12 @@ class WaitingReasonTest : FunSpec({
         }
     }
 
-    test("every vehicle busy: says with which order, and gone once one is free") {
+    test("every vehicle busy: says which vehicles, and gone once one is free") {
         SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
             listOf("A", "B", "C", "D").forEachIndexed { i, name -> kernel.order(name, vehicle = "Vehicle-0${i + 1}") }
             kernel.order("E")
-            kernel.reason("E") shouldBe "vehicle Vehicle-01: processing order A; vehicle Vehicle-02: processing " +
-                "order B; vehicle Vehicle-03: processing order C; and 1 more vehicles"
+            kernel.reason("E") shouldBe
+                "every vehicle is busy with an order: Vehicle-01, Vehicle-02, Vehicle-03, Vehicle-04"
             kernel.context.runUntil { kernel.core.orders.require("E").state.name != "DISPATCHABLE" }
             kernel.reason("E") shouldBe null
         }
