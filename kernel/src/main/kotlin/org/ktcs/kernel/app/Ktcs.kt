@@ -11,7 +11,6 @@ import org.ktcs.kernel.extension.InstalledExtensions
 import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.persistence.ModelFileException
 import org.ktcs.kernel.simulation.Fleet
-import org.ktcs.kernel.simulation.GridPlant
 import org.ktcs.kernel.simulation.SimulationRunner
 import org.ktcs.kernel.web.KernelVersion
 import java.io.PrintStream
@@ -29,6 +28,7 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
             is Command.Simulate -> simulate(command.options)
             is Command.CheckModel -> ModelTools(out).check(command.file)
             is Command.ConvertModel -> ModelTools(out).convert(command.input, command.output)
+            is Command.GenerateModel -> ModelTools(out).generate(command.plant, command.output)
             Command.Help -> 0.also { out.println(CommandLine.usage) }
             Command.Version -> 0.also { out.println("kTCS ${KernelVersion.ofThisBuild().version}") }
         }
@@ -71,9 +71,9 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
         )
         Logging.apply(config)
         Logging.quietNotifications()
-        val plant =
-            options.grid?.let { (width, height) -> GridPlant(width, height).build() }
-                ?: PlantModelLoader.load(options.run.model).model
+        val generated = options.grid?.let { (w, h) -> GeneratedPlant("grid", w, h, options.vehicles ?: 10) }
+            ?: options.warehouse?.let { (w, h) -> GeneratedPlant("warehouse", w, h, options.vehicles ?: 10) }
+        val plant = generated?.let(ModelTools::generated) ?: PlantModelLoader.load(options.run.model).model
         val model = Fleet.withVehicles(plant, options.vehicles ?: plant.vehicles.size.coerceAtLeast(1))
         val installed = extensions(config)
         val report = withContextClassLoader(installed.classLoader) {
