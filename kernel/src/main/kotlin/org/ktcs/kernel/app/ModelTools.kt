@@ -1,10 +1,10 @@
 package org.ktcs.kernel.app
 
+import org.ktcs.api.model.PlantModel
 import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.model.ModelProblem
 import org.ktcs.kernel.model.PlantModelValidator
 import org.ktcs.kernel.persistence.ModelFileException
-import org.ktcs.api.model.PlantModel
 import org.ktcs.kernel.persistence.PlantModelFiles
 import org.ktcs.kernel.simulation.TrafficGrid
 import org.ktcs.kernel.simulation.WarehousePlant

@@ -80,6 +80,11 @@ class SimulationRunner(
                 final >= orders || stalled() ||
                     kernel.context.elapsedMillis() > limitSimulatedMillis
             }
+            if (System.getProperty("ktcs.safetyDebug") != null) {
+                kernel.core.plant.vehicles().forEach { v ->
+                    System.err.println("${v.name} ${v.state} ${v.procState} ${v.currentPosition} order=${v.transportOrder} alloc=${v.allocatedResources} claimed=${v.claimedResources.size} pending=${kernel.core.scheduler.pendingAllocations()[v.name]}")
+                }
+            }
             val makespan = kernel.context.elapsedMillis() / 1000.0
             val all = kernel.core.orders.all().filter { it.name.startsWith(ORDER_PREFIX) }
             return SimulationReport(

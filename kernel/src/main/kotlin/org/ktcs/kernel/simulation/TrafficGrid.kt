@@ -41,7 +41,12 @@ class TrafficGrid(private val width: Int, private val height: Int, private val v
         val ring = ring()
         val locations = ring.indices.filter { it % STATION_EVERY == 0 }.map { i ->
             val (x, y) = ring[i]
-            Location("Station-%03d".format(i / STATION_EVERY + 1), TRANSFER_TYPE, outside(x, y, STATION_OFFSET), listOf(Link(point(x, y))))
+            Location(
+                "Station-%03d".format(i / STATION_EVERY + 1),
+                TRANSFER_TYPE,
+                outside(x, y, STATION_OFFSET),
+                listOf(Link(point(x, y))),
+            )
         }
         val fleet = (0 until vehicles).map { n ->
             val segment = n * ring.size / vehicles
@@ -101,7 +106,13 @@ class TrafficGrid(private val width: Int, private val height: Int, private val v
     }
 
     private fun detour(from: String, to: String, a: Position, b: Position): Path =
-        Path("$from --- $to", from, to, hypot((b.x - a.x).toDouble(), (b.y - a.y).toDouble()).roundToLong(), maxVelocity = SPEED)
+        Path(
+            "$from --- $to",
+            from,
+            to,
+            hypot((b.x - a.x).toDouble(), (b.y - a.y).toDouble()).roundToLong(),
+            maxVelocity = SPEED,
+        )
 
     private fun point(x: Int, y: Int) = "P-%02d-%02d".format(x, y)
 
@@ -127,8 +138,32 @@ class TrafficGrid(private val width: Int, private val height: Int, private val v
         val b = outside(to.first, to.second, PARK_OFFSET)
         // Midway along the lane, 1.5 m outside it (a corner's diagonal offset does not count).
         val horizontal = from.second == to.second
-        val x = if (horizontal) (a.x + b.x) / 2 else (if (from.first == 0) -PARK_OFFSET else (width - 1) * SPACING + PARK_OFFSET)
-        val y = if (horizontal) (if (from.second == 0) -PARK_OFFSET else (height - 1) * SPACING + PARK_OFFSET) else (a.y + b.y) / 2
+        val x = if (horizontal) {
+            (a.x + b.x) / 2
+        } else {
+            (
+                if (from.first ==
+                    0
+                ) {
+                    -PARK_OFFSET
+                } else {
+                    (width - 1) * SPACING + PARK_OFFSET
+                }
+                )
+        }
+        val y = if (horizontal) {
+            (
+                if (from.second ==
+                    0
+                ) {
+                    -PARK_OFFSET
+                } else {
+                    (height - 1) * SPACING + PARK_OFFSET
+                }
+                )
+        } else {
+            (a.y + b.y) / 2
+        }
         return Position(x, y, 0)
     }
 

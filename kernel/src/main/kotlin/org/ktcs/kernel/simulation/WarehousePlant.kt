@@ -55,7 +55,8 @@ class WarehousePlant(private val aisles: Int, private val depth: Int, private va
                 point(stub, a * AISLE_GAP + STUB_LENGTH, y * SPACING)
                 twoWay(aisle(a, y), stub, STUB_LENGTH)
                 val position = Position(a * AISLE_GAP + STUB_LENGTH + 500, y * SPACING, 0)
-                locations += Location("Station-%02d-%02d".format(a, y), TrafficGrid.TRANSFER_TYPE, position, listOf(Link(stub)))
+                locations +=
+                    Location("Station-%02d-%02d".format(a, y), TrafficGrid.TRANSFER_TYPE, position, listOf(Link(stub)))
             }
         }
         val fleet = (0 until vehicles).map { n ->
@@ -106,7 +107,15 @@ class WarehousePlant(private val aisles: Int, private val depth: Int, private va
     }
 
     private fun twoWay(from: String, to: String, length: Long) {
-        paths += Path("$from --- $to", from, to, length, maxVelocity = TrafficGrid.SPEED, maxReverseVelocity = TrafficGrid.SPEED)
+        paths +=
+            Path(
+                "$from --- $to",
+                from,
+                to,
+                length,
+                maxVelocity = TrafficGrid.SPEED,
+                maxReverseVelocity = TrafficGrid.SPEED,
+            )
     }
 
     private companion object {

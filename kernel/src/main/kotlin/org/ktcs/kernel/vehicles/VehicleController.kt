@@ -80,9 +80,21 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         }
         remaining.clear()
         remaining.addAll(plannedCommands(order, driveOrder, route) { env.plant.staticModel().location(it)?.name })
-        env.scheduler().claim(this, remaining.map { it.resources })
+        claimRestOfOrder(order, index)
         publishResources()
         requestNext()
+    }
+
+    /**
+     * Claims what is left of the current drive order and the routes of the drive orders after it: deadlock
+     * avoidance judges the whole way the vehicle still has to go, so that it never starts a leg it cannot finish.
+     */
+    private fun claimRestOfOrder(order: TransportOrder, index: Int) {
+        val later = order.driveOrders.drop(index + 1).flatMap { driveOrder ->
+            val route = driveOrder.route ?: return@flatMap emptyList()
+            plannedCommands(order, driveOrder, route) { env.plant.staticModel().location(it)?.name }
+        }
+        env.scheduler().claim(this, (remaining + later).map { it.resources })
     }
 
     private fun requestNext() {
@@ -107,6 +119,9 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         requestNext()
         return true
     }
+
+    override fun heldAfter(resources: Set<String>): Set<String> =
+        held.keptAfter(resources, ::pathLength, lengthToCover())
 
     fun onCommandExecuted(command: MovementCommand) {
         val done = sent.firstOrNull()
@@ -288,7 +303,7 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
                 env.plant.staticModel().location(it)?.name
             }.drop(kept.size),
         )
-        env.scheduler().claim(this, remaining.map { it.resources })
+        claimRestOfOrder(order, order.currentDriveOrderIndex)
         publishResources()
         requestNext()
         return true
