@@ -139,6 +139,12 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         return last.keys + keysOf(last.client.heldAfter(last.resources))
     }
 
+    /**
+     * Whether [client]'s claim makes it wait, through others, for itself: its first step leads into vehicles that
+     * wait for what it stands on. A claim cannot be refused, so the client should route around that step.
+     */
+    fun claimIsBlocked(client: SchedulerClient): Boolean = safety.waitsForItself(client.name)
+
     /** What [client] still needs as deadlock avoidance sees it: its claimed route ahead and its way out. */
     fun needs(client: String): Set<String> = safety.needs(client)
 

@@ -26,29 +26,40 @@ internal class ExitCorridors(model: PlantModel) {
 
     /** Whether [path] may be driven in both directions (itself, or with a path the other way): vehicles may meet on it. */
     fun isTwoWay(path: String): Boolean = path in twoWay
-    private val cache = HashMap<String, Set<String>>()
+    private val cache = HashMap<String, Exit>()
 
     fun isPoint(name: String): Boolean = name in points
 
-    /** The paths and points a vehicle standing at [point] needs to get away from it. */
-    fun from(point: String): Set<String> = cache.getOrPut(point) {
+    /**
+     * What a vehicle standing at [point] needs to get away from it: the single-track corridor it must drive first
+     * ([Exit.required]) and the ways on from the first point with a choice, of which it needs any one
+     * ([Exit.options]).
+     */
+    fun from(point: String): Exit = cache.getOrPut(point) {
         val corridor = LinkedHashSet<String>()
         var current = point
         repeat(MAX_CORRIDOR) {
             val ways = exits[current].orEmpty()
-            ways.forEach { (path, next) ->
-                corridor += path
-                corridor += next
+            val only = ways.singleOrNull()
+            if (only == null || only.second == point) {
+                return@getOrPut Exit(corridor, ways.map { (path, next) -> setOf(path, next) })
             }
-            val only = ways.singleOrNull() ?: return@getOrPut corridor
-            if (only.second == point) return@getOrPut corridor
+            corridor += only.first
+            corridor += only.second
             current = only.second
         }
-        corridor
+        Exit(corridor, emptyList())
     }
 
     private companion object {
         /** Longer single-track corridors are unusual; the rest of one counts as a way out. */
         const val MAX_CORRIDOR = 64
+    }
+}
+
+/** The way out of a point: a corridor to drive through, then any one of [options] (none: a dead end). */
+internal class Exit(val required: Set<String>, val options: List<Set<String>>) {
+    companion object {
+        val NONE = Exit(emptySet(), emptyList())
     }
 }

@@ -4,13 +4,14 @@ package org.ktcs.kernel.scheduling
  * Deadlock avoidance: no grant may close a cycle of vehicles waiting for each other (see the developer's guide,
  * "Traffic rule").
  *
- * Each client needs its look-ahead A: the next step it claimed and has not been granted yet, extended over every
- * further step on a two-way stretch (where vehicles could meet head-on) and, at the end of its claim, by the way out
- * of the point where it will stop ([ExitCorridors]); a client without a claim needs the way out of where it stands.
- * It holds H, what the scheduler gave it. Client u waits for w when A(u) ∩ H(w) ≠ ∅. A grant of X to v changes
- * H(v) to H(v) ∪ X and A(v) to the look-ahead after X; it is made only if no client v then waits for (transitively)
- * waits for v. The check walks forward from v over "the holders of what this one needs next", so it costs the chain
- * of vehicles queued ahead of v, not the plant.
+ * Each client has a look-ahead: the next step it claimed and has not been granted yet, extended over every further
+ * step on a two-way stretch (where vehicles could meet head-on), and at the end of its claim the way out of the point
+ * where it will stop ([ExitCorridors]: a corridor it needs, then any one of the ways on). A client without a claim
+ * has the way out of where it stands. Client u waits for w when w holds what u's look-ahead needs (for the ways on:
+ * when every one of them is held). A grant of X to v makes v hold X and what its length covers behind X once it has
+ * driven there, and moves v's look-ahead past X; it is made only if v would then not wait, through any chain of
+ * waits, for itself. The check walks forward from v over the holders of what each vehicle needs next, so it costs the
+ * queue of vehicles ahead of v, not the plant.
  *
  * Keys are resource names plus the names of SAME_DIRECTION_ONLY blocks (treated as exclusive here, a conservative
  * simplification); SINGLE_VEHICLE_ONLY blocks are expanded to their members by the caller.
@@ -20,11 +21,12 @@ internal class RouteSafety(
     private val holdings: (String) -> Set<String>,
     private val holders: (String) -> Collection<String>,
 ) {
+    private class Step(val keys: Set<String>, val twoWay: Boolean)
+
+    private class LookAhead(val required: Set<String>, val options: List<Set<String>>)
 
     private val routes = HashMap<String, ArrayDeque<Step>>()
-    private val wayOut = HashMap<String, Set<String>>()
-
-    private class Step(val keys: Set<String>, val twoWay: Boolean)
+    private val wayOut = HashMap<String, Exit>()
 
     /** How many grants were held back because they would have closed a cycle. */
     var heldBack = 0L
@@ -35,7 +37,7 @@ internal class RouteSafety(
     /** Replaces [client]'s claim with [route] (keys per step, in driving order) ending at [end]. */
     fun claim(client: String, route: List<Set<String>>, end: String?) {
         routes[client] = route.mapTo(ArrayDeque()) { keys -> Step(keys, keys.any(exits::isTwoWay)) }
-        wayOut[client] = end?.let(exits::from).orEmpty()
+        wayOut[client] = end?.let(exits::from) ?: Exit.NONE
     }
 
     /** [client] has no claim any more; it needs the way out of wherever it stands. */
@@ -47,8 +49,8 @@ internal class RouteSafety(
     /** Recomputes the way out of a client without a claim after what it holds changed. */
     fun standing(client: String) {
         if (client in routes) return
-        val points = holdings(client).filter(exits::isPoint)
-        wayOut[client] = points.flatMapTo(HashSet()) { exits.from(it) }
+        val point = holdings(client).singleOrNull(exits::isPoint)
+        wayOut[client] = point?.let(exits::from) ?: Exit.NONE
     }
 
     fun remove(client: String) {
@@ -69,31 +71,44 @@ internal class RouteSafety(
      * drives, so waits for that resolve by themselves.
      */
     fun mayGrant(client: String, keys: Set<String>, behind: Set<String>): Boolean {
-        val held = keys + behind
-        val ahead = lookAhead(client, skipping = keys)
-        val seen = HashSet<String>()
-        val queue = ArrayDeque<String>()
-        fun enqueueHoldersOf(needed: Set<String>) {
-            for (key in needed) for (holder in holders(key)) if (holder != client && seen.add(holder)) queue += holder
-        }
-        enqueueHoldersOf(ahead)
-        while (queue.isNotEmpty()) {
-            val next = lookAhead(queue.removeFirst())
-            if (next.any { it in held }) {
-                heldBack++
-                return false
-            }
-            enqueueHoldersOf(next)
+        val walk = Walk(client, keys + behind)
+        if (walk.isBlocked(lookAhead(client, skipping = keys), client)) {
+            heldBack++
+            return false
         }
         return true
     }
 
+    /** Whether [client], as it stands, waits through a chain of waits for itself (only a fresh claim can do that). */
+    fun waitsForItself(client: String): Boolean = Walk(client, holdings(client)).isBlocked(lookAhead(client), client)
+
     /** What [client] needs next as deadlock avoidance sees it, for diagnostics. */
-    fun needs(client: String): Set<String> = lookAhead(client)
+    fun needs(client: String): Set<String> = lookAhead(client).let { it.required + it.options.flatten() }
+
+    /** One check: which vehicles would wait, directly or through others, for [grantee] holding [held]. */
+    private inner class Walk(private val grantee: String, private val held: Set<String>) {
+        private val known = HashMap<String, Boolean>()
+
+        fun isBlocked(ahead: LookAhead, self: String): Boolean =
+            ahead.required.any { isTaken(it, self) } ||
+                (ahead.options.isNotEmpty() && ahead.options.all { option -> option.any { isTaken(it, self) } })
+
+        // A vehicle on the way to the cycle is assumed able to move (known = false while it is looked at): a cycle
+        // not through the grantee is no reason to hold it back.
+        private fun waitsForGrantee(client: String): Boolean = known[client] ?: run {
+            known[client] = false
+            isBlocked(lookAhead(client), client).also { known[client] = it }
+        }
+
+        private fun isTaken(key: String, self: String): Boolean =
+            (self != grantee && key in held) ||
+                holders(key).any { it != self && it != grantee && waitsForGrantee(it) }
+    }
 
     // The next step, every following step while on a two-way stretch, and the way out at the end of the claim.
-    private fun lookAhead(client: String, skipping: Set<String>? = null): Set<String> {
-        val route = routes[client] ?: return wayOut[client].orEmpty()
+    private fun lookAhead(client: String, skipping: Set<String>? = null): LookAhead {
+        val exit = wayOut[client] ?: Exit.NONE
+        val route = routes[client] ?: return LookAhead(exit.required, exit.options)
         val ahead = HashSet<String>()
         var skipped = skipping == null
         for (step in route) {
@@ -102,9 +117,9 @@ internal class RouteSafety(
                 continue
             }
             ahead += step.keys
-            if (!step.twoWay) return ahead
+            if (!step.twoWay) return LookAhead(ahead, emptyList())
         }
-        ahead += wayOut[client].orEmpty()
-        return ahead
+        ahead += exit.required
+        return LookAhead(ahead, exit.options)
     }
 }

@@ -81,6 +81,7 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         remaining.clear()
         remaining.addAll(plannedCommands(order, driveOrder, route) { env.plant.staticModel().location(it)?.name })
         claimRestOfOrder(order, index)
+        if (avoidBlockedStart()) return
         publishResources()
         requestNext()
     }
@@ -307,6 +308,19 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         publishResources()
         requestNext()
         return true
+    }
+
+    /**
+     * A vehicle starting a route from where it stood may find its first step leading into a queue of vehicles that
+     * wait for its own point (it stood idle beside a full loop): going that way would close a deadlock. Route
+     * around that step instead, if the plant allows; returns whether it rerouted.
+     */
+    private fun avoidBlockedStart(): Boolean {
+        val scheduler = env.scheduler() as? org.ktcs.kernel.scheduling.DefaultScheduler ?: return false
+        if (sent.isNotEmpty() || !scheduler.claimIsBlocked(this)) return false
+        val position = env.plant.vehicle(name).currentPosition
+        val first = remaining.firstOrNull()?.resources ?: return false
+        return reroute(first - setOfNotNull(position))
     }
 
     /** The driver can take more commands now (e.g. it was enabled). */
