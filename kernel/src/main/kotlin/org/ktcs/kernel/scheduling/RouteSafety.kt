@@ -85,24 +85,53 @@ internal class RouteSafety(
     /** What [client] needs next as deadlock avoidance sees it, for diagnostics. */
     fun needs(client: String): Set<String> = lookAhead(client).let { it.required + it.options.flatten() }
 
-    /** One check: which vehicles would wait, directly or through others, for [grantee] holding [held]. */
+    /**
+     * One check: which vehicles would wait, directly or through others, for [grantee] holding [held]. The vehicles
+     * near enough to matter are those whose needs the grantee's needs lead to; among them, the ones that wait for the
+     * grantee are found as a least fixpoint (a vehicle waits if what it needs is held by the grantee or by vehicles
+     * already known to wait), so a loop of waits not through the grantee counts for nothing.
+     */
     private inner class Walk(private val grantee: String, private val held: Set<String>) {
-        private val known = HashMap<String, Boolean>()
+        private val waiting = HashSet<String>()
 
-        fun isBlocked(ahead: LookAhead, self: String): Boolean =
+        fun isBlocked(ahead: LookAhead, self: String): Boolean {
+            if (self == grantee) settle(ahead)
+            return blocks(ahead, self)
+        }
+
+        private fun blocks(ahead: LookAhead, self: String): Boolean =
             ahead.required.any { isTaken(it, self) } ||
                 (ahead.options.isNotEmpty() && ahead.options.all { option -> option.any { isTaken(it, self) } })
 
-        // A vehicle on the way to the cycle is assumed able to move (known = false while it is looked at): a cycle
-        // not through the grantee is no reason to hold it back.
-        private fun waitsForGrantee(client: String): Boolean = known[client] ?: run {
-            known[client] = false
-            isBlocked(lookAhead(client), client).also { known[client] = it }
-        }
-
         private fun isTaken(key: String, self: String): Boolean =
-            (self != grantee && key in held) ||
-                holders(key).any { it != self && it != grantee && waitsForGrantee(it) }
+            (self != grantee && key in held) || holders(key).any { it != self && it in waiting }
+
+        private fun settle(start: LookAhead) {
+            val near = LinkedHashMap<String, LookAhead>()
+            val queue = ArrayDeque<String>()
+            fun reach(ahead: LookAhead) {
+                for (key in ahead.required + ahead.options.flatten()) {
+                    for (holder in holders(key)) {
+                        if (holder != grantee && holder !in near) {
+                            near[holder] = lookAhead(holder)
+                            queue += holder
+                        }
+                    }
+                }
+            }
+            reach(start)
+            while (queue.isNotEmpty()) reach(near.getValue(queue.removeFirst()))
+            val order = near.keys.reversed()
+            do {
+                var changed = false
+                for (client in order) {
+                    if (client !in waiting && blocks(near.getValue(client), client)) {
+                        waiting += client
+                        changed = true
+                    }
+                }
+            } while (changed)
+        }
     }
 
     // The next step, every following step while on a two-way stretch, and the way out at the end of the claim.
