@@ -43,7 +43,7 @@ data class SimulateOptions(
     val warehouse: Pair<Int, Int>? = null,
     val vehicles: Int? = null,
     val realTime: Boolean = false,
-    val timeFactor: Double = 1.0,
+    val timeFactor: Double? = null,
     val orders: Int = 100,
     val seed: Long = 1,
 )
@@ -65,7 +65,7 @@ object CommandLine {
         |       ktcs model generate grid|warehouse WxH [--vehicles N] OUT
         |                                                          write a generated benchmark plant
         |       ktcs simulate [--model FILE | --grid WxH | --warehouse WxH] [--vehicles N] [--orders M] [--seed S]
-        |                     [--virtual-time | --real-time [--time-factor F]] [--set key=value]...
+        |                     [--virtual-time | --real-time] [--time-factor F] [--set key=value]...
         |                                                          benchmark the kernel with simulated vehicles
         |       ktcs --help | --version
         |
@@ -169,16 +169,13 @@ object CommandLine {
                     value().toLongOrNull() ?: throw UsageException("--seed expects a whole number"),
                 )
 
-                "--virtual-time" -> options
+                "--virtual-time" -> options.copy(realTime = false)
 
                 else -> throw UsageException("unknown option '$name'")
             }
         }
         if (listOfNotNull(options.run.model, options.grid, options.warehouse).size > 1) {
             throw UsageException("give only one of --model, --grid and --warehouse")
-        }
-        if (options.timeFactor != 1.0 && !options.realTime) {
-            throw UsageException("--time-factor needs --real-time (virtual time runs as fast as it can)")
         }
         return options
     }

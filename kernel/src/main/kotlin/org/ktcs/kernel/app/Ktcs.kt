@@ -62,13 +62,9 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
     }
 
     private fun simulate(options: SimulateOptions): Int {
-        // Virtual time: precise-position reports between points only cost time, nobody watches them.
-        val config = config(
-            options.run.copy(
-                overrides =
-                listOf("loopback.positionReportInterval=0") + options.run.overrides,
-            ),
-        )
+        // The same configuration and timing rules as `ktcs` itself; --time-factor is loopback.timeFactor.
+        val timeFactor = listOfNotNull(options.timeFactor?.let { "loopback.timeFactor=$it" })
+        val config = config(options.run.copy(overrides = options.run.overrides + timeFactor))
         Logging.apply(config)
         Logging.quietNotifications()
         val generated = options.grid?.let { (w, h) -> GeneratedPlant("grid", w, h, options.vehicles ?: 10) }
@@ -77,10 +73,18 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
         val model = Fleet.withVehicles(plant, options.vehicles ?: plant.vehicles.size.coerceAtLeast(1))
         val installed = extensions(config)
         val report = withContextClassLoader(installed.classLoader) {
-            SimulationRunner(model, config, installed.extensions, options.orders, options.seed).run()
+            SimulationRunner(
+                model,
+                config,
+                installed.extensions,
+                options.orders,
+                options.seed,
+                realTime = options.realTime,
+            ).run()
         }
         report.lines().forEach(out::println)
-        return if (report.ordersFinished == report.ordersCreated && report.doubleAllocations == 0) 0 else EXIT_FAILURE
+        val clean = report.doubleAllocations == 0 && report.sharedPositions == 0 && report.deadlocksDetected == 0
+        return if (report.ordersFinished == report.ordersCreated && clean) 0 else EXIT_FAILURE
     }
 
     /** The extensions on the class path and in `extensions.directory` (required there if set explicitly). */

@@ -86,12 +86,5 @@ class DeadlockWatchdog(private val kernel: KernelCore) {
             " -> ",
         )} wait for each other; contested resources ${deadlock.resources.sorted().joinToString()}"
         kernel.notifications.publish("deadlock watchdog", NotificationLevel.IMPORTANT, text)
-        if (System.getProperty("ktcs.safetyDebug") != null) {
-            System.err.println("DL $text")
-            deadlock.vehicles.forEach { v ->
-                val veh = kernel.plant.vehicle(v)
-                System.err.println("   $v ${veh.procState} order=${veh.transportOrder} alloc=${veh.allocatedResources} pending=${kernel.scheduler.pendingAllocations()[v]} next=${veh.claimedResources.take(2)}")
-            }
-        }
     }
 }

@@ -148,7 +148,9 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     /** What [client] still needs as deadlock avoidance sees it: its claimed route ahead and its way out. */
     fun needs(client: String): Set<String> = safety.needs(client)
 
-    private fun newSafety(model: PlantModel) = RouteSafety(ExitCorridors(model), { occupancy.holdingKeys(it) }, { occupancy.holdersOf(it) })
+    private fun newSafety(model: PlantModel) = RouteSafety(ExitCorridors(model), {
+        occupancy.holdingKeys(it)
+    }, { occupancy.holdersOf(it) })
 
     private fun keysOf(resources: Set<String>): Set<String> {
         val expanded = blocks.expand(resources)

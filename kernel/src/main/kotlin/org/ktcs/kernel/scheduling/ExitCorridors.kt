@@ -12,12 +12,19 @@ internal class ExitCorridors(model: PlantModel) {
     private val exits: Map<String, List<Pair<String, String>>> = buildMap<String, MutableList<Pair<String, String>>> {
         for (path in model.paths) {
             if (path.maxVelocity > 0) getOrPut(path.sourcePoint, ::ArrayList) += path.name to path.destinationPoint
-            if (path.maxReverseVelocity > 0) getOrPut(path.destinationPoint, ::ArrayList) += path.name to path.sourcePoint
+            if (path.maxReverseVelocity >
+                0
+            ) {
+                getOrPut(path.destinationPoint, ::ArrayList) += path.name to path.sourcePoint
+            }
         }
     }
     private val points = model.points.mapTo(HashSet()) { it.name }
     private val twoWay: Set<String> = run {
-        val directed = model.paths.filter { it.maxVelocity > 0 }.mapTo(HashSet()) { it.sourcePoint to it.destinationPoint }
+        val directed = model.paths.filter { it.maxVelocity > 0 }.mapTo(HashSet()) {
+            it.sourcePoint to
+                it.destinationPoint
+        }
         model.paths.filter { path ->
             (path.maxVelocity > 0 && path.maxReverseVelocity > 0) ||
                 (path.destinationPoint to path.sourcePoint) in directed
