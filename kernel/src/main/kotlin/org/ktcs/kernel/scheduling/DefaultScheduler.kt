@@ -27,6 +27,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     private var deliveries = Deliveries(clock)
     private var safety = newSafety(model)
     private val deferred = TreeSet(compareBy(Request::seq))
+    private val deferredSince = HashMap<Long, Long>()
     private val claims = LinkedHashMap<String, List<Set<String>>>()
     private val lastGrants = HashMap<String, Request>()
     private val paused = HashSet<String>()
@@ -43,6 +44,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         deliveries = Deliveries(clock)
         safety = newSafety(model)
         deferred.clear()
+        deferredSince.clear()
         lastGrants.clear()
         claims.clear()
         paused.clear()
@@ -126,12 +128,21 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     fun waitForGraph(): WaitForGraph = WaitForGraph(
         pending.heads()
             .associate { request ->
-                request.client.name to occupancy.blockersOf(request.client.name, request)
+                request.client.name to (occupancy.blockersOf(request.client.name, request) + heldBackBy(request))
                     .mapValues { (blocker, resources) -> resources.filterTo(HashSet()) { it in keptBy(blocker) } }
                     .filterValues { it.isNotEmpty() }
             }
             .filterValues { it.isNotEmpty() },
     )
+
+    // A grant held back for longer than HELD_BACK_REPORT_MILLIS waits for whoever holds what it would need next: if
+    // those wait for it in turn (vehicles meeting head-on on a two-way stretch), the watchdog sees a deadlock and
+    // routes one of them around it, instead of both waiting for good.
+    private fun heldBackBy(request: Request): Map<String, Set<String>> {
+        val since = deferredSince[request.seq] ?: return emptyMap()
+        if (clock.elapsedMillis() - since < HELD_BACK_REPORT_MILLIS || request !in deferred) return emptyMap()
+        return safety.blockersAfter(request.client.name, request.keys)
+    }
 
     // What a client will still hold once it has driven everything it was granted (everything, if it drives nothing).
     private fun keptBy(client: String): Set<String> {
@@ -166,6 +177,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         val retry = deferred.toList()
         deferred.clear()
         process(retry)
+        if (deferredSince.size > deferred.size) deferredSince.keys.retainAll(deferred.mapTo(HashSet()) { it.seq })
     }
 
     private fun newRequest(client: SchedulerClient, resources: Set<String>): Request {
@@ -188,8 +200,10 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
             val behind = keysOf(request.client.heldAfter(request.resources))
             if (!safety.mayGrant(request.client.name, request.keys, behind)) {
                 deferred += request
+                deferredSince.putIfAbsent(request.seq, clock.elapsedMillis())
                 continue
             }
+            deferredSince.remove(request.seq)
             pending.pop(request.client.name)?.let(queue::add)
             queue += pending.waitingFor(grant(request))
         }
@@ -207,6 +221,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     }
 
     private companion object {
+        /** Two watchdog periods: shorter refusals are queues moving along, not vehicles stuck face to face. */
+        const val HELD_BACK_REPORT_MILLIS = 2_000L
         private val log = LoggerFactory.getLogger(DefaultScheduler::class.java)
     }
 }

@@ -79,6 +79,16 @@ internal class RouteSafety(
         return true
     }
 
+    /** Who holds what [client] would need next after a grant of [keys]: whom a held-back grant waits for. */
+    fun blockersAfter(client: String, keys: Set<String>): Map<String, Set<String>> {
+        val ahead = lookAhead(client, skipping = keys)
+        val blockers = HashMap<String, MutableSet<String>>()
+        for (key in ahead.required + ahead.options.flatten()) {
+            holders(key).filter { it != client }.forEach { blockers.getOrPut(it, ::HashSet) += key }
+        }
+        return blockers
+    }
+
     /** Whether [client], as it stands, waits through a chain of waits for itself (only a fresh claim can do that). */
     fun waitsForItself(client: String): Boolean = Walk(client, holdings(client)).isBlocked(lookAhead(client), client)
 
