@@ -129,7 +129,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         pending.heads()
             .associate { request ->
                 request.client.name to (occupancy.blockersOf(request.client.name, request) + heldBackBy(request))
-                    .mapValues { (blocker, resources) -> resources.filterTo(HashSet()) { it in keptBy(blocker) } }
+                    .mapValues { (blocker, resources) -> stillBlocking(blocker, resources) }
                     .filterValues { it.isNotEmpty() }
             }
             .filterValues { it.isNotEmpty() },
@@ -142,6 +142,13 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         val since = deferredSince[request.seq] ?: return emptyMap()
         if (clock.elapsedMillis() - since < HELD_BACK_REPORT_MILLIS || request !in deferred) return emptyMap()
         return safety.blockersAfter(request.client.name, request.keys)
+    }
+
+    // Of what a client blocks, what it holds now but gives up as it drives on does not count.
+    private fun stillBlocking(client: String, resources: Set<String>): Set<String> {
+        val holds = occupancy.holdingKeys(client)
+        val kept = keptBy(client)
+        return resources.filterTo(HashSet()) { it !in holds || it in kept }
     }
 
     // What a client will still hold once it has driven everything it was granted (everything, if it drives nothing).
