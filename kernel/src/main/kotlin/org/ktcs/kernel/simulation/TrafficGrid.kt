@@ -55,25 +55,13 @@ class TrafficGrid(private val width: Int, private val height: Int, private val v
             points += Point(bay, Pose(bayPosition(from, to)), PointType.PARK_POSITION)
             paths += detour(point(from.first, from.second), bay, at(from.first, from.second), bayPosition(from, to))
             paths += detour(bay, point(to.first, to.second), bayPosition(from, to), at(to.first, to.second))
-            Vehicle(
-                "Vehicle-%03d".format(n + 1),
-                maxVelocity = SPEED,
-                maxReverseVelocity = SPEED,
-                boundingBox = BoundingBox(length = VEHICLE_LENGTH),
-                properties = mapOf(Fleet.INITIAL_POSITION to bay),
-            )
+            benchmarkVehicle(n + 1, bay)
         }
         return PlantModel(
             name = "Traffic grid ${width}x$height, $vehicles vehicles",
             points = points,
             paths = paths,
-            locationTypes = listOf(
-                LocationType(
-                    TRANSFER_TYPE,
-                    setOf(GridPlant.LOAD, GridPlant.UNLOAD),
-                    layout = LocationTypeLayout(LocationRepresentation.LOAD_TRANSFER_GENERIC),
-                ),
-            ),
+            locationTypes = listOf(transferStationType()),
             locations = locations,
             vehicles = fleet,
         )
@@ -168,6 +156,22 @@ class TrafficGrid(private val width: Int, private val height: Int, private val v
     }
 
     companion object {
+        /** Vehicle number [number] of a benchmark plant: 1 m long, 1 m/s, starting in its park [bay]. */
+        fun benchmarkVehicle(number: Int, bay: String): Vehicle = Vehicle(
+            "Vehicle-%03d".format(number),
+            maxVelocity = SPEED,
+            maxReverseVelocity = SPEED,
+            boundingBox = BoundingBox(length = VEHICLE_LENGTH),
+            properties = mapOf(Fleet.INITIAL_POSITION to bay),
+        )
+
+        /** The transfer stations of the benchmark plants: Load cargo and Unload cargo. */
+        fun transferStationType(): LocationType = LocationType(
+            TRANSFER_TYPE,
+            setOf(GridPlant.LOAD, GridPlant.UNLOAD),
+            layout = LocationTypeLayout(LocationRepresentation.LOAD_TRANSFER_GENERIC),
+        )
+
         const val TRANSFER_TYPE = "Transfer station"
         const val SPACING = 2_000L
         const val STATION_OFFSET = 1_000L

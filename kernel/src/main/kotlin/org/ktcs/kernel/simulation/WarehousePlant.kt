@@ -1,18 +1,13 @@
 package org.ktcs.kernel.simulation
 
-import org.ktcs.api.model.BoundingBox
 import org.ktcs.api.model.Link
 import org.ktcs.api.model.Location
-import org.ktcs.api.model.LocationRepresentation
-import org.ktcs.api.model.LocationType
-import org.ktcs.api.model.LocationTypeLayout
 import org.ktcs.api.model.Path
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.Point
 import org.ktcs.api.model.PointType
 import org.ktcs.api.model.Pose
 import org.ktcs.api.model.Position
-import org.ktcs.api.model.Vehicle
 
 /**
  * A warehouse-style plant: [aisles] two-way aisles of [depth] points (2 m apart, 4 m between aisles) joined by a
@@ -66,25 +61,13 @@ class WarehousePlant(private val aisles: Int, private val depth: Int, private va
             val y = if (side == 0) -STUB_LENGTH else (depth - 1) * SPACING + STUB_LENGTH
             point(bay, c * SPACING, y, PointType.PARK_POSITION)
             twoWay(cross(c, side), bay, STUB_LENGTH)
-            Vehicle(
-                "Vehicle-%03d".format(n + 1),
-                maxVelocity = TrafficGrid.SPEED,
-                maxReverseVelocity = TrafficGrid.SPEED,
-                boundingBox = BoundingBox(length = TrafficGrid.VEHICLE_LENGTH),
-                properties = mapOf(Fleet.INITIAL_POSITION to bay),
-            )
+            TrafficGrid.benchmarkVehicle(n + 1, bay)
         }
         return PlantModel(
             name = "Warehouse ${aisles}x$depth, $vehicles vehicles",
             points = points,
             paths = paths,
-            locationTypes = listOf(
-                LocationType(
-                    TrafficGrid.TRANSFER_TYPE,
-                    setOf(GridPlant.LOAD, GridPlant.UNLOAD),
-                    layout = LocationTypeLayout(LocationRepresentation.LOAD_TRANSFER_GENERIC),
-                ),
-            ),
+            locationTypes = listOf(TrafficGrid.transferStationType()),
             locations = locations,
             vehicles = fleet,
         )
