@@ -23,6 +23,7 @@ object PlantModelValidator {
         ::blockProblems,
         ::vehicleProblems,
         ::layoutProblems,
+        ::trafficProblems,
     )
 
     /** Every problem of [model], errors and warnings, grouped by kind of check and in model order within each. */
