@@ -32,6 +32,9 @@ object PlantModelValidator {
         return checks.flatMap { check -> check(index) }
     }
 
+    /** The warnings about places in [model] where vehicles cannot be kept from blocking each other for good. */
+    fun trafficWarnings(model: PlantModel): List<ModelProblem> = trafficProblems(ModelIndex(model))
+
     /**
      * Returns the warnings of [model].
      *

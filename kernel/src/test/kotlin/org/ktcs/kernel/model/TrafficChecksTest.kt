@@ -3,12 +3,15 @@ package org.ktcs.kernel.model
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.collections.shouldContainExactly
+import io.kotest.matchers.string.shouldStartWith
 import org.ktcs.api.model.Link
 import org.ktcs.api.model.Location
 import org.ktcs.api.model.LocationType
 import org.ktcs.api.model.Path
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.Point
+import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.simulation.SimulationKernel
 
 class TrafficChecksTest : FunSpec({
     // J is a junction (X, Y, B); B and C form a two-way dead end off it.
@@ -28,6 +31,13 @@ class TrafficChecksTest : FunSpec({
                 "vehicles sent to two of them must pass each other on one track, which no traffic rule can " +
                 "arrange; a second vehicle waits outside until the first has left",
         )
+    }
+
+    test("the kernel tells operators about such a dead end when it starts") {
+        SimulationKernel(plant("B", "C"), ConfigLoader().load(null, emptyMap(), emptyList())).use { kernel ->
+            kernel.core.notifications.recent().single { it.source == "traffic control" }.text shouldStartWith
+                "point 'C': dead end C, B has 2 places to stop"
+        }
     }
 
     test("one place to stop in a dead end is fine") {
