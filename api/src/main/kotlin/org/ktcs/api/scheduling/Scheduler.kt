@@ -67,4 +67,11 @@ public interface SchedulerClient {
      * withdrawn meanwhile); the scheduler then frees them again.
      */
     public fun onAllocationGranted(resources: Set<String>): Boolean
+
+    /**
+     * What the client will still hold besides [resources] once it has driven up to them: the resources its length
+     * still covers behind it. Deadlock avoidance counts them as held after a grant of [resources]; the default,
+     * nothing, suits vehicles that are short compared with the paths.
+     */
+    public fun heldAfter(resources: Set<String>): Set<String> = emptySet()
 }

@@ -24,6 +24,9 @@ sealed interface Command {
     /** Read a plant-model file of any supported version and write it as 7.0.0. */
     data class ConvertModel(val input: Path, val output: Path) : Command
 
+    /** Generate a benchmark plant ([kind] `grid` or `warehouse`) and write it as a 7.0.0 model file. */
+    data class GenerateModel(val plant: GeneratedPlant, val output: Path) : Command
+
     /** Run the kernel with loopback vehicles on random orders and print figures. */
     data class Simulate(val options: SimulateOptions) : Command
 
@@ -44,10 +47,16 @@ data class RunOptions(val model: Path? = null, val configFile: Path? = null, val
 data class SimulateOptions(
     val run: RunOptions = RunOptions(),
     val grid: Pair<Int, Int>? = null,
+    val warehouse: Pair<Int, Int>? = null,
     val vehicles: Int? = null,
+    val realTime: Boolean = false,
+    val timeFactor: Double? = null,
     val orders: Int = 100,
     val seed: Long = 1,
 )
+
+/** A generated benchmark plant: `grid` (issue #11's one-way traffic grid) or `warehouse`, its size and fleet. */
+data class GeneratedPlant(val kind: String, val width: Int, val height: Int, val vehicles: Int)
 
 /** A mistake on the command line; the message is one line. */
 class UsageException(message: String) : RuntimeException(message)
@@ -60,8 +69,11 @@ object CommandLine {
         |       ktcs config reference                              print the configuration reference (Markdown)
         |       ktcs model check FILE                              check a plant-model file
         |       ktcs model convert IN OUT                          convert a plant-model file to version 7.0.0
-        |       ktcs simulate [--model FILE | --grid WxH] [--vehicles N] [--orders M] [--seed S] [--virtual-time]
-        |                     [--set key=value]...                 benchmark the kernel with simulated vehicles
+        |       ktcs model generate grid|warehouse WxH [--vehicles N] OUT
+        |                                                          write a generated benchmark plant
+        |       ktcs simulate [--model FILE | --grid WxH | --warehouse WxH] [--vehicles N] [--orders M] [--seed S]
+        |                     [--virtual-time | --real-time] [--time-factor F] [--set key=value]...
+        |                                                          benchmark the kernel with simulated vehicles
         |       ktcs bench [demo | batch] [--model FILE] [--runs N] [--url URL [--pid PID]] [--orders N] ...
         |                                                          measure a running kTCS through its web API
         |                                                          (ktcs bench --help lists every option)
@@ -109,9 +121,33 @@ object CommandLine {
             Command.ConvertModel(Path.of(it[0]), Path.of(it[1]))
         }
 
-        null -> throw UsageException("'model' needs a subcommand: check or convert")
+        "generate" -> parseGenerate(args.drop(1))
 
-        else -> throw UsageException("unknown model subcommand '${args.first()}': expected check or convert")
+        null -> throw UsageException("'model' needs a subcommand: check, convert or generate")
+
+        else -> throw UsageException(
+            "unknown model subcommand '${args.first()}': expected check, convert or generate",
+        )
+    }
+
+    private fun parseGenerate(args: List<String>): Command {
+        val form = "model generate grid|warehouse WxH [--vehicles N] OUT"
+        var vehicles: Int? = null
+        val plain = ArrayList<String>()
+        val rest = args.iterator()
+        while (rest.hasNext()) {
+            val arg = rest.next()
+            when {
+                arg == "--vehicles" -> vehicles = positive(arg, if (rest.hasNext()) rest.next() else "")
+                arg.startsWith("--vehicles=") -> vehicles = positive("--vehicles", arg.substringAfter('='))
+                arg.startsWith("--") -> throw UsageException("unknown option '$arg'")
+                else -> plain += arg
+            }
+        }
+        val (kind, size, output) = exactly(plain, 3, form)
+        if (kind !in GENERATED_KINDS) throw UsageException("unknown plant kind '$kind': expected grid or warehouse")
+        val (width, height) = parseSize(size, "model generate")
+        return Command.GenerateModel(GeneratedPlant(kind, width, height, vehicles ?: 10), Path.of(output))
     }
 
     private fun exactly(args: List<String>, count: Int, form: String): List<String> {
@@ -129,7 +165,16 @@ object CommandLine {
 
                 "--set" -> options.copy(run = options.run.copy(overrides = options.run.overrides + value()))
 
-                "--grid" -> options.copy(grid = parseGrid(value()))
+                "--grid" -> options.copy(grid = parseSize(value(), name))
+
+                "--warehouse" -> options.copy(warehouse = parseSize(value(), name))
+
+                "--real-time" -> options.copy(realTime = true)
+
+                "--time-factor" -> options.copy(
+                    timeFactor = value().toDoubleOrNull()?.takeIf { it > 0 && it.isFinite() }
+                        ?: throw UsageException("--time-factor expects a positive number"),
+                )
 
                 "--vehicles" -> options.copy(vehicles = positive(name, value()))
 
@@ -140,15 +185,13 @@ object CommandLine {
                     value().toLongOrNull() ?: throw UsageException("--seed expects a whole number"),
                 )
 
-                "--virtual-time" -> options
+                "--virtual-time" -> options.copy(realTime = false)
 
                 else -> throw UsageException("unknown option '$name'")
             }
         }
-        if (options.run.model != null &&
-            options.grid != null
-        ) {
-            throw UsageException("give either --model or --grid, not both")
+        if (listOfNotNull(options.run.model, options.grid, options.warehouse).size > 1) {
+            throw UsageException("give only one of --model, --grid and --warehouse")
         }
         return options
     }
@@ -201,7 +244,7 @@ object CommandLine {
             options = when (name) {
                 "--model" -> options.copy(model = Path.of(value()))
 
-                "--grid" -> options.copy(grid = parseGrid(value()))
+                "--grid" -> options.copy(grid = parseSize(value(), name))
 
                 "--runs" -> options.copy(runs = positive(name, value()))
 
@@ -257,13 +300,15 @@ object CommandLine {
     private fun positiveDecimal(name: String, text: String): Double =
         text.toDoubleOrNull()?.takeIf { it > 0 } ?: throw UsageException("$name expects a positive number, got '$text'")
 
-    private fun parseGrid(text: String): Pair<Int, Int> {
+    private val GENERATED_KINDS = setOf("grid", "warehouse")
+
+    private fun parseSize(text: String, what: String): Pair<Int, Int> {
         val parts = text.lowercase().split('x')
         val size = parts.mapNotNull { it.toIntOrNull() }
         if (parts.size != 2 || size.size != 2 ||
-            size.any { it < 2 }
+            size.any { it < 3 }
         ) {
-            throw UsageException("--grid expects WIDTHxHEIGHT with both at least 2, e.g. 40x40, got '$text'")
+            throw UsageException("$what expects WIDTHxHEIGHT with both at least 3, e.g. 40x40, got '$text'")
         }
         return size[0] to size[1]
     }

@@ -12,7 +12,6 @@ import org.ktcs.kernel.extension.InstalledExtensions
 import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.persistence.ModelFileException
 import org.ktcs.kernel.simulation.Fleet
-import org.ktcs.kernel.simulation.GridPlant
 import org.ktcs.kernel.simulation.SimulationRunner
 import org.ktcs.kernel.web.KernelVersion
 import java.io.PrintStream
@@ -34,6 +33,7 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
             is Command.ConvertModel -> ModelTools(out).convert(command.input, command.output)
             is Command.Bench -> Bench(command.options, out, err).run()
             Command.BenchHelp -> 0.also { out.println(CommandLine.benchUsage) }
+            is Command.GenerateModel -> ModelTools(out).generate(command.plant, command.output)
             Command.Help -> 0.also { out.println(CommandLine.usage) }
             Command.Version -> 0.also { out.println("kTCS ${KernelVersion.ofThisBuild().version}") }
         }
@@ -74,25 +74,29 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
     }
 
     private fun simulate(options: SimulateOptions): Int {
-        // Virtual time: precise-position reports between points only cost time, nobody watches them.
-        val config = config(
-            options.run.copy(
-                overrides =
-                listOf("loopback.positionReportInterval=0") + options.run.overrides,
-            ),
-        )
+        // The same configuration and timing rules as `ktcs` itself; --time-factor is loopback.timeFactor.
+        val timeFactor = listOfNotNull(options.timeFactor?.let { "loopback.timeFactor=$it" })
+        val config = config(options.run.copy(overrides = options.run.overrides + timeFactor))
         Logging.apply(config)
         Logging.quietNotifications()
-        val plant =
-            options.grid?.let { (width, height) -> GridPlant(width, height).build() }
-                ?: PlantModelLoader.load(options.run.model).model
+        val generated = options.grid?.let { (w, h) -> GeneratedPlant("grid", w, h, options.vehicles ?: 10) }
+            ?: options.warehouse?.let { (w, h) -> GeneratedPlant("warehouse", w, h, options.vehicles ?: 10) }
+        val plant = generated?.let(ModelTools::generated) ?: PlantModelLoader.load(options.run.model).model
         val model = Fleet.withVehicles(plant, options.vehicles ?: plant.vehicles.size.coerceAtLeast(1))
         val installed = extensions(config)
         val report = withContextClassLoader(installed.classLoader) {
-            SimulationRunner(model, config, installed.extensions, options.orders, options.seed).run()
+            SimulationRunner(
+                model,
+                config,
+                installed.extensions,
+                options.orders,
+                options.seed,
+                realTime = options.realTime,
+            ).run()
         }
         report.lines().forEach(out::println)
-        return if (report.ordersFinished == report.ordersCreated && report.doubleAllocations == 0) 0 else EXIT_FAILURE
+        val clean = report.doubleAllocations == 0 && report.sharedPositions == 0 && report.deadlocksDetected == 0
+        return if (report.ordersFinished == report.ordersCreated && clean) 0 else EXIT_FAILURE
     }
 
     /** The extensions on the class path and in `extensions.directory` (required there if set explicitly). */

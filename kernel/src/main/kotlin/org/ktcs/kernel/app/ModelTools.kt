@@ -1,10 +1,13 @@
 package org.ktcs.kernel.app
 
+import org.ktcs.api.model.PlantModel
 import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.model.ModelProblem
 import org.ktcs.kernel.model.PlantModelValidator
 import org.ktcs.kernel.persistence.ModelFileException
 import org.ktcs.kernel.persistence.PlantModelFiles
+import org.ktcs.kernel.simulation.TrafficGrid
+import org.ktcs.kernel.simulation.WarehousePlant
 import java.io.PrintStream
 import java.nio.file.Path
 
@@ -31,6 +34,15 @@ class ModelTools(private val out: PrintStream) {
         return 0
     }
 
+    /** Writes the generated [plant] to [output] as 7.0.0. */
+    fun generate(plant: GeneratedPlant, output: Path): Int {
+        val model = generated(plant)
+        PlantModelFiles.write(model, output)
+        out.println("wrote $output (version 7.0.0): ${model.summary()}")
+        PlantModelValidator.validate(model).forEach { out.println(it.line()) }
+        return 0
+    }
+
     /** Reads [input] in any supported version and writes it as 7.0.0; refuses a model with errors. */
     fun convert(input: Path, output: Path): Int {
         val read = PlantModelFiles.readWithWarnings(input)
@@ -41,6 +53,14 @@ class ModelTools(private val out: PrintStream) {
         out.println("wrote $output (version 7.0.0): ${model.summary()}")
         problems.forEach { out.println(it.line()) }
         return 0
+    }
+
+    companion object {
+        /** The model of a generated benchmark plant. */
+        fun generated(plant: GeneratedPlant): PlantModel = when (plant.kind) {
+            "grid" -> TrafficGrid(plant.width, plant.height, plant.vehicles).build()
+            else -> WarehousePlant(plant.width, plant.height, plant.vehicles).build()
+        }
     }
 }
 

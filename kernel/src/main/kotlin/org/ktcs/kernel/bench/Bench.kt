@@ -1,10 +1,11 @@
 package org.ktcs.kernel.bench
 
 import org.ktcs.api.model.PlantModel
+import org.ktcs.kernel.app.GeneratedPlant
+import org.ktcs.kernel.app.ModelTools
 import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.persistence.PlantModelFiles
 import org.ktcs.kernel.simulation.Fleet
-import org.ktcs.kernel.simulation.GridPlant
 import java.io.File
 import java.io.PrintStream
 import java.net.ServerSocket
@@ -17,7 +18,10 @@ import java.nio.file.Path
  */
 class Bench(private val options: BenchOptions, private val out: PrintStream, private val err: PrintStream) {
     fun run(): Int {
-        val loaded = options.grid?.let { (width, height) -> GridPlant(width, height).build() }
+        val loaded = options.grid
+            ?.let { (width, height) ->
+                ModelTools.generated(GeneratedPlant("grid", width, height, options.vehicles ?: 10))
+            }
             ?: PlantModelLoader.load(options.model).model
         // A started kTCS gets the fleet asked for, each vehicle on a point of its own, as `ktcs simulate` places them.
         val model = if (options.url ==

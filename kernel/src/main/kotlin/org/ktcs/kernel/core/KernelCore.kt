@@ -92,6 +92,7 @@ class KernelCore(
         recoveryEvaluator.initialize()
         dispatcherProvider().initialize()
         controllers.start(options.enableDriversOnStart, options.initialIntegrationLevel)
+        announceTrafficLimits()
         trigger.start()
         watchdog.start()
         operationsWatchdog.start()
@@ -242,7 +243,15 @@ class KernelCore(
         router.updateTopology(plant.topology())
         scheduler.updatePlantModel(plant.topology())
         controllers.start(options.enableDriversOnStart, options.initialIntegrationLevel)
+        announceTrafficLimits()
         trigger.request()
+    }
+
+    // Where the plant itself defeats deadlock avoidance (dead ends with several stops), operators hear it at once.
+    private fun announceTrafficLimits() {
+        PlantModelValidator.trafficWarnings(plant.topology()).forEach {
+            notifications.publish("traffic control", NotificationLevel.IMPORTANT, "${it.element}: ${it.message}")
+        }
     }
 
     private fun refuseWhileBusy() {

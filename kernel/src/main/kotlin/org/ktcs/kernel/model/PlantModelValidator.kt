@@ -23,6 +23,7 @@ object PlantModelValidator {
         ::blockProblems,
         ::vehicleProblems,
         ::layoutProblems,
+        ::trafficProblems,
     )
 
     /** Every problem of [model], errors and warnings, grouped by kind of check and in model order within each. */
@@ -30,6 +31,9 @@ object PlantModelValidator {
         val index = ModelIndex(model)
         return checks.flatMap { check -> check(index) }
     }
+
+    /** The warnings about places in [model] where vehicles cannot be kept from blocking each other for good. */
+    fun trafficWarnings(model: PlantModel): List<ModelProblem> = trafficProblems(ModelIndex(model))
 
     /**
      * Returns the warnings of [model].

@@ -25,9 +25,16 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     private var occupancy = Occupancy(blocks)
     private var pending = PendingRequests()
     private var deliveries = Deliveries(clock)
+    private var safety = newSafety(model)
+    private val deferred = TreeSet(compareBy(Request::seq))
+    private val deferredSince = HashMap<Long, Long>()
     private val claims = LinkedHashMap<String, List<Set<String>>>()
+    private val lastGrants = HashMap<String, Request>()
     private val paused = HashSet<String>()
     private var nextSeq = 0L
+
+    /** How many grants deadlock avoidance held back so far (each one until it was safe). */
+    val grantsHeldBack: Long get() = safety.heldBack
 
     override fun updatePlantModel(model: PlantModel) {
         deliveries.cancelAll()
@@ -35,16 +42,24 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         occupancy = Occupancy(blocks)
         pending = PendingRequests()
         deliveries = Deliveries(clock)
+        safety = newSafety(model)
+        deferred.clear()
+        deferredSince.clear()
+        lastGrants.clear()
         claims.clear()
         paused.clear()
     }
 
     override fun claim(client: SchedulerClient, resources: List<Set<String>>) {
         claims[client.name] = resources.map { it.toSet() }
+        safety.claim(client.name, resources.map(::keysOf), resources.lastOrNull()?.let(::pointOf))
+        retryDeferred()
     }
 
     override fun unclaim(client: SchedulerClient) {
         claims.remove(client.name)
+        safety.unclaim(client.name)
+        retryDeferred()
     }
 
     /** The route ahead that each client claimed, by client name; claims never block anybody. */
@@ -61,7 +76,10 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
             log.warn("Vehicle {} takes {} although vehicle(s) {} hold it", client.name, resource, others.sorted())
         }
         val taken = occupancy.take(client.name, request)
+        lastGrants.remove(client.name)
+        safety.standing(client.name)
         process(pending.waitingFor(taken.redirected) + listOfNotNull(pending.head(client.name)))
+        retryDeferred()
     }
 
     // A grant already decided is still announced: the client refuses it if it no longer wants it.
@@ -70,14 +88,20 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     }
 
     override fun free(client: SchedulerClient, resources: Set<String>) {
-        wake(occupancy.release(client.name, resources))
+        val released = occupancy.release(client.name, resources)
+        safety.standing(client.name)
+        wake(released)
+        retryDeferred()
     }
 
     override fun freeAll(client: SchedulerClient) {
         deliveries.cancel(client.name)
         pending.clear(client.name)
         claims.remove(client.name)
+        lastGrants.remove(client.name)
+        safety.remove(client.name)
         wake(occupancy.releaseAll(client.name))
+        retryDeferred()
     }
 
     override fun setPaused(client: SchedulerClient, paused: Boolean) {
@@ -85,6 +109,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
             this.paused += client.name
         } else if (this.paused.remove(client.name)) {
             process(listOfNotNull(pending.head(client.name)))
+            retryDeferred()
         }
     }
 
@@ -95,12 +120,72 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     /** The direction in which the users of each SAME_DIRECTION_ONLY block entered it, where known, by block name. */
     fun blockDirections(): Map<String, String> = occupancy.directions.directions()
 
-    /** Whom each client's oldest pending request waits for, including the users of blocks it may not enter yet. */
+    /**
+     * Whom each client's oldest pending request waits for, including the users of blocks it may not enter yet. A
+     * client driving away from a resource it was granted more ahead of does not count as blocking it: it gives the
+     * resource up as it drives.
+     */
     fun waitForGraph(): WaitForGraph = WaitForGraph(
         pending.heads()
-            .associate { it.client.name to occupancy.blockersOf(it.client.name, it) }
+            .associate { request ->
+                request.client.name to (occupancy.blockersOf(request.client.name, request) + heldBackBy(request))
+                    .mapValues { (blocker, resources) -> stillBlocking(blocker, resources) }
+                    .filterValues { it.isNotEmpty() }
+            }
             .filterValues { it.isNotEmpty() },
     )
+
+    // A grant held back for longer than HELD_BACK_REPORT_MILLIS waits for whoever holds what it would need next: if
+    // those wait for it in turn (vehicles meeting head-on on a two-way stretch), the watchdog sees a deadlock and
+    // routes one of them around it, instead of both waiting for good.
+    private fun heldBackBy(request: Request): Map<String, Set<String>> {
+        val since = deferredSince[request.seq] ?: return emptyMap()
+        if (clock.elapsedMillis() - since < HELD_BACK_REPORT_MILLIS || request !in deferred) return emptyMap()
+        return safety.blockersAfter(request.client.name, request.keys)
+    }
+
+    // Of what a client blocks, what it holds now but gives up as it drives on does not count.
+    private fun stillBlocking(client: String, resources: Set<String>): Set<String> {
+        val holds = occupancy.holdingKeys(client)
+        val kept = keptBy(client)
+        return resources.filterTo(HashSet()) { it !in holds || it in kept }
+    }
+
+    // What a client will still hold once it has driven everything it was granted (everything, if it drives nothing).
+    private fun keptBy(client: String): Set<String> {
+        val last = lastGrants[client] ?: return occupancy.holdingKeys(client)
+        return last.keys + keysOf(last.client.heldAfter(last.resources))
+    }
+
+    /**
+     * Whether [client]'s claim makes it wait, through others, for itself: its first step leads into vehicles that
+     * wait for what it stands on. A claim cannot be refused, so the client should route around that step.
+     */
+    fun claimIsBlocked(client: SchedulerClient): Boolean = safety.waitsForItself(client.name)
+
+    /** What [client] still needs as deadlock avoidance sees it: its claimed route ahead and its way out. */
+    fun needs(client: String): Set<String> = safety.needs(client)
+
+    private fun newSafety(model: PlantModel) = RouteSafety(ExitCorridors(model), {
+        occupancy.holdingKeys(it)
+    }, { occupancy.holdersOf(it) })
+
+    private fun keysOf(resources: Set<String>): Set<String> {
+        val expanded = blocks.expand(resources)
+        return expanded + blocks.entries(expanded).map { it.block.name }
+    }
+
+    // A step's resources are its path, the point it ends at and maybe a location: the point is where it ends.
+    private fun pointOf(resources: Set<String>): String? = resources.lastOrNull(safety::isPoint)
+
+    // Grants held back for safety may become safe after any change elsewhere; each retry costs one reachability walk.
+    private fun retryDeferred() {
+        if (deferred.isEmpty()) return
+        val retry = deferred.toList()
+        deferred.clear()
+        process(retry)
+        if (deferredSince.size > deferred.size) deferredSince.keys.retainAll(deferred.mapTo(HashSet()) { it.seq })
+    }
 
     private fun newRequest(client: SchedulerClient, resources: Set<String>): Request {
         val requested = resources.toSet()
@@ -119,6 +204,13 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         while (queue.isNotEmpty()) {
             val request = queue.pollFirst()!!
             if (!pending.isHead(request) || !isGrantable(request)) continue
+            val behind = keysOf(request.client.heldAfter(request.resources))
+            if (!safety.mayGrant(request.client.name, request.keys, behind)) {
+                deferred += request
+                deferredSince.putIfAbsent(request.seq, clock.elapsedMillis())
+                continue
+            }
+            deferredSince.remove(request.seq)
             pending.pop(request.client.name)?.let(queue::add)
             queue += pending.waitingFor(grant(request))
         }
@@ -129,11 +221,15 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
 
     private fun grant(request: Request): Set<String> {
         val taken = occupancy.take(request.client.name, request)
+        safety.granted(request.client.name, request.keys)
+        lastGrants[request.client.name] = request
         deliveries.send(request.client, request.resources) { free(request.client, taken.added) }
         return taken.redirected
     }
 
     private companion object {
+        /** Two watchdog periods: shorter refusals are queues moving along, not vehicles stuck face to face. */
+        const val HELD_BACK_REPORT_MILLIS = 2_000L
         private val log = LoggerFactory.getLogger(DefaultScheduler::class.java)
     }
 }

@@ -13,6 +13,16 @@ internal class Occupancy(private val blocks: BlockIndex) {
     private val requested = HashMap<String, MutableSet<String>>()
     val directions = DirectionRecords()
 
+    /** What [client] holds as deadlock avoidance counts it: its resources and the SAME_DIRECTION_ONLY blocks it uses. */
+    fun holdingKeys(client: String): Set<String> {
+        val mine = held[client] ?: return emptySet()
+        val used = mine.flatMap { blocks.sameDirectionBlocksOf(it) }
+        return if (used.isEmpty()) mine else mine + used.map { it.name }
+    }
+
+    /** Who holds [key], a resource or the name of a SAME_DIRECTION_ONLY block. */
+    fun holdersOf(key: String): Collection<String> = holders[key] ?: directions.users(key)
+
     fun snapshot(): Map<String, Set<String>> = held.mapValues { it.value.toSet() }
 
     fun mayTake(client: String, request: Request): Boolean =

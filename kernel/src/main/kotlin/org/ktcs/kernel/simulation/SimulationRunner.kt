@@ -3,7 +3,7 @@ package org.ktcs.kernel.simulation
 import org.koin.dsl.module
 import org.ktcs.api.event.KernelEvent
 import org.ktcs.api.event.TransportOrderEvent
-import org.ktcs.api.model.IntegrationLevel
+import org.ktcs.api.event.VehicleEvent
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.ProcState
 import org.ktcs.api.order.Destination
@@ -11,16 +11,24 @@ import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.api.routing.Router
 import org.ktcs.kernel.config.KtcsConfig
+import org.ktcs.kernel.config.KtcsSettings
+import org.ktcs.kernel.context.RealTimeKernelContext
+import org.ktcs.kernel.context.VirtualTimeKernelContext
 import org.ktcs.kernel.extension.KtcsExtension
 import org.ktcs.kernel.routerConfiguration
 import org.ktcs.kernel.routing.DefaultRouter
+import org.ktcs.kernel.scheduling.DefaultScheduler
 import java.lang.management.ManagementFactory
 import kotlin.random.Random
 
 /**
- * Runs the kernel with loopback vehicles on random transport orders (load at one station, unload at another) on
- * virtual time, and measures it. Keeps as many orders open as there are vehicles, creating the next whenever one
- * ends, until [orders] were created and all are final (or [limitSimulatedMillis] passed).
+ * Runs the kernel with loopback vehicles on random transport orders (load at one station, unload at another) and
+ * measures it. Posts all [orders] at once, as the benchmark client does, and waits until all are final (or
+ * [limitSimulatedMillis] of kernel time passed, or an hour of vehicle time without any order ending).
+ *
+ * Time: the kernel runs exactly as `ktcs` runs it (same watchdog period, dispatcher runs and driver reports, with
+ * loopback vehicles [timeFactor] times faster than the kernel clock), on virtual time (as fast as the machine can) or,
+ * with [realTime], on the wall clock.
  */
 class SimulationRunner(
     private val model: PlantModel,
@@ -31,8 +39,10 @@ class SimulationRunner(
     private val loadOperation: String = "Load cargo",
     private val unloadOperation: String = "Unload cargo",
     private val limitSimulatedMillis: Long = 30L * 86_400_000,
+    private val realTime: Boolean = false,
 ) {
     private val random = Random(seed)
+    private val timeFactor = config[KtcsSettings.loopbackTimeFactor]
     private val sources = model.locations.filter {
         model.locationType(it.type)?.allowedOperations?.contains(loadOperation) ==
             true
@@ -52,58 +62,71 @@ class SimulationRunner(
     fun run(): SimulationReport {
         val router = TimedRouter(DefaultRouter(routerConfiguration(config)))
         val overrides = module { single<Router> { router } }
-        SimulationKernel(model, config, extensions.map { it.module() } + overrides).use { kernel ->
+        val clock = if (realTime) RealTimeKernelContext() else VirtualTimeKernelContext()
+        SimulationKernel(model, config, extensions.map { it.module() } + overrides, clock).use { kernel ->
             val audit = AllocationAudit()
             val latencies = AssignLatencies(kernel)
-            var created = 0
             var final = 0
             var lastProgress = 0L
-            fun createNext() {
-                if (created >= orders) return
-                kernel.core.createTransportOrder(randomOrder(created++))
-            }
-            kernel.core.events.listen(audit::onEvent)
-            kernel.core.events.listen(latencies::onEvent)
-            kernel.core.events.listen { event ->
-                if (event is TransportOrderEvent && event.isSimulationOrderEnding()) {
-                    final++
-                    lastProgress = kernel.context.elapsedMillis()
-                    kernel.context.execute(::createNext)
-                }
-            }
+            val creations = (0 until orders).map(::randomOrder)
             val threads = ManagementFactory.getThreadMXBean()
-            val cpuStart = threads.currentThreadCpuTime
-            val wallStart = System.nanoTime()
-            kernel.context.execute { repeat(model.vehicles.size) { createNext() } }
-            val stalled = { kernel.context.elapsedMillis() - lastProgress > STALL_LIMIT_MILLIS }
-            kernel.context.runUntil {
-                final >= orders || stalled() ||
-                    kernel.context.elapsedMillis() > limitSimulatedMillis
+            val kernelThread = kernel.onKernel {
+                kernel.core.events.listen(audit::onEvent)
+                kernel.core.events.listen(latencies::onEvent)
+                kernel.core.events.listen { event ->
+                    if (event is TransportOrderEvent && event.isSimulationOrderEnding()) {
+                        final++
+                        lastProgress = kernel.clock.elapsedMillis()
+                    }
+                }
+                Thread.currentThread().id
             }
-            val makespan = kernel.context.elapsedMillis() / 1000.0
-            val all = kernel.core.orders.all().filter { it.name.startsWith(ORDER_PREFIX) }
-            return SimulationReport(
-                plant = model.name,
-                vehicles = model.vehicles.size,
-                ordersCreated = created,
-                ordersFinished = all.count { it.state == TransportOrderState.FINISHED },
-                ordersFailed = all.count {
-                    it.state == TransportOrderState.FAILED ||
-                        it.state == TransportOrderState.UNROUTABLE
-                },
-                makespanSimulatedSeconds = makespan,
-                kernelCpuSeconds = (threads.currentThreadCpuTime - cpuStart) / 1e9,
-                wallSeconds = (System.nanoTime() - wallStart) / 1e9,
-                assignLatencyMillis = Percentiles.of(latencies.millis),
-                routeMillis = Percentiles.of(router.durationsNanos.map { it / 1e6 }),
-                routeComputations = router.durationsNanos.size,
-                deadlocksDetected = kernel.core.watchdog.detected,
-                deadlocksResolved = kernel.core.watchdog.resolved,
-                idleVehiclesMoved = kernel.core.watchdog.idleVehiclesMoved,
-                doubleAllocations = audit.doubleAllocations,
-                sharedPositions = audit.sharedPositions,
-            )
+            val cpuStart = threads.getThreadCpuTime(kernelThread)
+            val wallStart = System.nanoTime()
+            val startMillis = kernel.onKernel { kernel.clock.elapsedMillis() }
+            kernel.onKernel {
+                lastProgress = kernel.clock.elapsedMillis()
+                creations.forEach { kernel.core.createTransportOrder(it) }
+            }
+            val stallLimit = (STALL_LIMIT_MILLIS / timeFactor).toLong()
+            kernel.runUntil {
+                val elapsed = kernel.clock.elapsedMillis()
+                final >= orders || elapsed - lastProgress > stallLimit || elapsed - startMillis > limitSimulatedMillis
+            }
+            return kernel.onKernel {
+                val cpu = threads.getThreadCpuTime(kernelThread) - cpuStart
+                report(kernel, (kernel.clock.elapsedMillis() - startMillis) * timeFactor / 1000.0, cpu / 1e9).copy(
+                    wallSeconds = (System.nanoTime() - wallStart) / 1e9,
+                    assignLatencyMillis = Percentiles.of(latencies.millis),
+                    routeMillis = Percentiles.of(router.durationsNanos.map { it / 1e6 }),
+                    routeComputations = router.durationsNanos.size,
+                    doubleAllocations = audit.doubleAllocations,
+                    sharedPositions = audit.sharedPositions,
+                    lowerBoundSeconds = LowerBound(model, config).seconds(creations),
+                )
+            }
         }
+    }
+
+    private fun report(kernel: SimulationKernel, makespanSeconds: Double, cpuSeconds: Double): SimulationReport {
+        val all = kernel.core.orders.all().filter { it.name.startsWith(ORDER_PREFIX) }
+        return SimulationReport(
+            plant = model.name,
+            vehicles = model.vehicles.size,
+            clock = if (realTime) "real time, time factor $timeFactor" else "virtual time, time factor $timeFactor",
+            ordersCreated = orders,
+            ordersFinished = all.count { it.state == TransportOrderState.FINISHED },
+            ordersFailed = all.count {
+                it.state == TransportOrderState.FAILED ||
+                    it.state == TransportOrderState.UNROUTABLE
+            },
+            makespanSimulatedSeconds = makespanSeconds,
+            kernelCpuSeconds = cpuSeconds,
+            deadlocksDetected = kernel.core.watchdog.detected,
+            deadlocksResolved = kernel.core.watchdog.resolved,
+            idleVehiclesMoved = kernel.core.watchdog.idleVehiclesMoved,
+            grantsHeldBack = (kernel.core.scheduler as? DefaultScheduler)?.grantsHeldBack ?: 0,
+        )
     }
 
     private fun TransportOrderEvent.isSimulationOrderEnding(): Boolean {
@@ -129,38 +152,34 @@ class SimulationRunner(
 }
 
 /**
- * How long orders wait between becoming DISPATCHABLE and being assigned, counting only orders that went to a vehicle
- * which was already idle when the order became dispatchable: the dispatcher's own latency, not the fleet's (an order
- * that waits for a busy or recharging vehicle is not the dispatcher's delay).
+ * The dispatcher's own latency: for each assignment, the time from the moment the order was dispatchable and its
+ * vehicle idle (whichever came last) until the order was assigned. Waiting for a busy vehicle is the fleet's delay,
+ * not the dispatcher's.
  */
 private class AssignLatencies(private val kernel: SimulationKernel) {
-    private class Waiting(val sinceMillis: Long, val idleVehicles: Set<String>)
-
-    private val waiting = HashMap<String, Waiting>()
+    private val dispatchable = HashMap<String, Long>()
+    private val idleSince = HashMap<String, Long>()
     val millis = ArrayList<Double>()
 
     fun onEvent(event: KernelEvent) {
+        val now = kernel.clock.elapsedMillis()
+        if (event is VehicleEvent) {
+            val vehicle = event.current ?: return
+            val idle = vehicle.procState == ProcState.IDLE && vehicle.transportOrder == null
+            if (idle && vehicle.name !in idleSince) idleSince[vehicle.name] = now
+            if (!idle) idleSince.remove(vehicle.name)
+        }
         if (event !is TransportOrderEvent) return
         val order = event.current ?: return
         val before = event.previous?.state
         if (order.state == TransportOrderState.DISPATCHABLE && before != TransportOrderState.DISPATCHABLE) {
-            waiting[order.name] = Waiting(kernel.context.elapsedMillis(), idleVehicles())
+            dispatchable[order.name] = now
         }
         if (order.state == TransportOrderState.BEING_PROCESSED && before == TransportOrderState.DISPATCHABLE) {
-            val wait = waiting.remove(order.name) ?: return
-            if (order.processingVehicle in
-                wait.idleVehicles
-            ) {
-                millis += (kernel.context.elapsedMillis() - wait.sinceMillis).toDouble()
-            }
+            val since = dispatchable.remove(order.name) ?: return
+            val vehicleIdle = order.processingVehicle?.let { idleSince[it] } ?: since
+            millis += (now - maxOf(since, vehicleIdle)).toDouble()
         }
-        if (order.state.isFinal) waiting.remove(order.name)
+        if (order.state.isFinal) dispatchable.remove(order.name)
     }
-
-    private fun idleVehicles(): Set<String> = kernel.core.plant.vehicles()
-        .filter {
-            it.integrationLevel == IntegrationLevel.TO_BE_UTILIZED && it.procState == ProcState.IDLE &&
-                it.transportOrder == null
-        }
-        .mapTo(HashSet()) { it.name }
 }

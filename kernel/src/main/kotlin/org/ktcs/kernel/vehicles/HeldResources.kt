@@ -48,6 +48,16 @@ class HeldResources {
         return passed.flatMapTo(HashSet()) { it } - stillNeeded
     }
 
+    /**
+     * What the vehicle would hold behind it after driving everything it holds and then [next]: the sets its
+     * [vehicleLength] still covers, [next] left out.
+     */
+    fun keptAfter(next: Set<String>, coverLength: (Set<String>) -> Long, vehicleLength: Long): Set<String> {
+        val index = sets.indexOf(next)
+        val driven = if (index >= 0) sets.take(index + 1) else sets + listOf(next)
+        return keptBehind(driven, coverLength, vehicleLength).flatMapTo(HashSet()) { it } - next
+    }
+
     // Newest first, keep passed sets until their paths cover the vehicle's length.
     private fun keptBehind(
         passed: List<Set<String>>,

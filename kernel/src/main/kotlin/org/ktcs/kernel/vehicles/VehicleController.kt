@@ -81,9 +81,22 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         }
         remaining.clear()
         remaining.addAll(plannedCommands(order, driveOrder, route) { env.plant.staticModel().location(it)?.name })
-        env.scheduler().claim(this, remaining.map { it.resources })
+        claimRestOfOrder(order, index)
+        if (avoidBlockedStart()) return
         publishResources()
         requestNext()
+    }
+
+    /**
+     * Claims what is left of the current drive order and the routes of the drive orders after it: deadlock
+     * avoidance judges the whole way the vehicle still has to go, so that it never starts a leg it cannot finish.
+     */
+    private fun claimRestOfOrder(order: TransportOrder, index: Int) {
+        val later = order.driveOrders.drop(index + 1).flatMap { driveOrder ->
+            val route = driveOrder.route ?: return@flatMap emptyList()
+            plannedCommands(order, driveOrder, route) { env.plant.staticModel().location(it)?.name }
+        }
+        env.scheduler().claim(this, (remaining + later).map { it.resources })
     }
 
     private fun requestNext() {
@@ -108,6 +121,9 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         requestNext()
         return true
     }
+
+    override fun heldAfter(resources: Set<String>): Set<String> =
+        held.keptAfter(resources, ::pathLength, lengthToCover())
 
     fun onCommandExecuted(command: MovementCommand) {
         val done = sent.firstOrNull()
@@ -335,10 +351,23 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
                 env.plant.staticModel().location(it)?.name
             }.drop(kept.size),
         )
-        env.scheduler().claim(this, remaining.map { it.resources })
+        claimRestOfOrder(order, order.currentDriveOrderIndex)
         publishResources()
         requestNext()
         return true
+    }
+
+    /**
+     * A vehicle starting a route from where it stood may find its first step leading into a queue of vehicles that
+     * wait for its own point (it stood idle beside a full loop): going that way would close a deadlock. Route
+     * around that step instead, if the plant allows; returns whether it rerouted.
+     */
+    private fun avoidBlockedStart(): Boolean {
+        val scheduler = env.scheduler() as? org.ktcs.kernel.scheduling.DefaultScheduler ?: return false
+        if (sent.isNotEmpty() || !scheduler.claimIsBlocked(this)) return false
+        val position = env.plant.vehicle(name).currentPosition
+        val first = remaining.firstOrNull()?.resources ?: return false
+        return reroute(first - setOfNotNull(position))
     }
 
     /** The driver can take more commands now (e.g. it was enabled). */

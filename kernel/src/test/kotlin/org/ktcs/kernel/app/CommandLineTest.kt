@@ -31,6 +31,15 @@ class CommandLineTest : FunSpec({
         CommandLine.parse(listOf("model", "check", "m.xml")) shouldBe Command.CheckModel(Path.of("m.xml"))
         CommandLine.parse(listOf("model", "convert", "in.xml", "out.xml")) shouldBe
             Command.ConvertModel(Path.of("in.xml"), Path.of("out.xml"))
+        CommandLine.parse(listOf("model", "generate", "grid", "20x20", "--vehicles", "30", "g.xml")) shouldBe
+            Command.GenerateModel(GeneratedPlant("grid", 20, 20, 30), Path.of("g.xml"))
+        CommandLine.parse(listOf("model", "generate", "warehouse", "8x12", "w.xml")) shouldBe
+            Command.GenerateModel(GeneratedPlant("warehouse", 8, 12, 10), Path.of("w.xml"))
+    }
+
+    test("simulate on a generated grid, on the wall clock with a time factor") {
+        CommandLine.parse(listOf("simulate", "--grid", "10x10", "--real-time", "--time-factor", "100")) shouldBe
+            Command.Simulate(SimulateOptions(grid = 10 to 10, realTime = true, timeFactor = 100.0))
     }
 
     test("bench: a workload and its options") {
@@ -48,8 +57,15 @@ class CommandLineTest : FunSpec({
         withData(
             listOf("--modle", "x") to "unknown option '--modle'",
             listOf("--model") to "--model needs a value",
-            listOf("model") to "'model' needs a subcommand: check or convert",
-            listOf("model", "fix", "x") to "unknown model subcommand 'fix': expected check or convert",
+            listOf("model") to "'model' needs a subcommand: check, convert or generate",
+            listOf("model", "fix", "x") to "unknown model subcommand 'fix': expected check, convert or generate",
+            listOf("model", "generate", "maze", "9x9", "o.xml") to
+                "unknown plant kind 'maze': expected grid or warehouse",
+            listOf("model", "generate", "grid", "2x9", "o.xml") to
+                "model generate expects WIDTHxHEIGHT with both at least 3, e.g. 40x40, got '2x9'",
+            listOf("simulate", "--grid", "9x9", "--warehouse", "9x9") to
+                "give only one of --model, --grid and --warehouse",
+            listOf("simulate", "--time-factor", "0") to "--time-factor expects a positive number",
             listOf("model", "check") to "expected 'model check FILE', got 0 argument(s)",
             listOf("model", "convert", "a") to "expected 'model convert IN OUT', got 1 argument(s)",
             listOf("simulate2") to "unknown command 'simulate2'",

@@ -1,0 +1,164 @@
+package org.ktcs.kernel.scheduling
+
+/**
+ * Deadlock avoidance: no grant may close a cycle of vehicles waiting for each other (see the developer's guide,
+ * "Traffic rule").
+ *
+ * Each client has a look-ahead: the next step it claimed and has not been granted yet, extended over every further
+ * step on a two-way stretch (where vehicles could meet head-on), and at the end of its claim the way out of the point
+ * where it will stop ([ExitCorridors]: a corridor it needs, then any one of the ways on). A client without a claim
+ * has the way out of where it stands. Client u waits for w when w holds what u's look-ahead needs (for the ways on:
+ * when every one of them is held). A grant of X to v makes v hold X and what its length covers behind X once it has
+ * driven there, and moves v's look-ahead past X; it is made only if v would then not wait, through any chain of
+ * waits, for itself. The check walks forward from v over the holders of what each vehicle needs next, so it costs the
+ * queue of vehicles ahead of v, not the plant.
+ *
+ * Keys are resource names plus the names of SAME_DIRECTION_ONLY blocks (treated as exclusive here, a conservative
+ * simplification); SINGLE_VEHICLE_ONLY blocks are expanded to their members by the caller.
+ */
+internal class RouteSafety(
+    private val exits: ExitCorridors,
+    private val holdings: (String) -> Set<String>,
+    private val holders: (String) -> Collection<String>,
+) {
+    private class Step(val keys: Set<String>, val twoWay: Boolean)
+
+    private class LookAhead(val required: Set<String>, val options: List<Set<String>>)
+
+    private val routes = HashMap<String, ArrayDeque<Step>>()
+    private val wayOut = HashMap<String, Exit>()
+
+    /** How many grants were held back because they would have closed a cycle. */
+    var heldBack = 0L
+        private set
+
+    fun isPoint(name: String): Boolean = exits.isPoint(name)
+
+    /** Replaces [client]'s claim with [route] (keys per step, in driving order) ending at [end]. */
+    fun claim(client: String, route: List<Set<String>>, end: String?) {
+        routes[client] = route.mapTo(ArrayDeque()) { keys -> Step(keys, keys.any(exits::isTwoWay)) }
+        wayOut[client] = end?.let(exits::from) ?: Exit.NONE
+    }
+
+    /** [client] has no claim any more; it needs the way out of wherever it stands. */
+    fun unclaim(client: String) {
+        routes.remove(client)
+        standing(client)
+    }
+
+    /** Recomputes the way out of a client without a claim after what it holds changed. */
+    fun standing(client: String) {
+        if (client in routes) return
+        val point = holdings(client).singleOrNull(exits::isPoint)
+        wayOut[client] = point?.let(exits::from) ?: Exit.NONE
+    }
+
+    fun remove(client: String) {
+        routes.remove(client)
+        wayOut.remove(client)
+    }
+
+    /** [client] was granted [keys]: the first claimed step with exactly these keys is no longer needed. */
+    fun granted(client: String, keys: Set<String>) {
+        val route = routes[client] ?: return
+        val index = route.indexOfFirst { it.keys == keys }
+        if (index >= 0) route.removeAt(index)
+    }
+
+    /**
+     * Whether granting [keys] to [client] keeps the waits free of cycles, once the client has driven up to them and
+     * holds [keys] and what its length still covers behind it ([behind]); what it holds until then it gives up as it
+     * drives, so waits for that resolve by themselves.
+     */
+    fun mayGrant(client: String, keys: Set<String>, behind: Set<String>): Boolean {
+        val walk = Walk(client, keys + behind)
+        if (walk.isBlocked(lookAhead(client, skipping = keys), client)) {
+            heldBack++
+            return false
+        }
+        return true
+    }
+
+    /** Who holds what [client] would need next after a grant of [keys]: whom a held-back grant waits for. */
+    fun blockersAfter(client: String, keys: Set<String>): Map<String, Set<String>> {
+        val ahead = lookAhead(client, skipping = keys)
+        val blockers = HashMap<String, MutableSet<String>>()
+        for (key in ahead.required + ahead.options.flatten()) {
+            holders(key).filter { it != client }.forEach { blockers.getOrPut(it, ::HashSet) += key }
+        }
+        return blockers
+    }
+
+    /** Whether [client], as it stands, waits through a chain of waits for itself (only a fresh claim can do that). */
+    fun waitsForItself(client: String): Boolean = Walk(client, holdings(client)).isBlocked(lookAhead(client), client)
+
+    /** What [client] needs next as deadlock avoidance sees it, for diagnostics. */
+    fun needs(client: String): Set<String> = lookAhead(client).let { it.required + it.options.flatten() }
+
+    /**
+     * One check: which vehicles would wait, directly or through others, for [grantee] holding [held]. The vehicles
+     * near enough to matter are those whose needs the grantee's needs lead to; among them, the ones that wait for the
+     * grantee are found as a least fixpoint (a vehicle waits if what it needs is held by the grantee or by vehicles
+     * already known to wait), so a loop of waits not through the grantee counts for nothing.
+     */
+    private inner class Walk(private val grantee: String, private val held: Set<String>) {
+        private val waiting = HashSet<String>()
+
+        fun isBlocked(ahead: LookAhead, self: String): Boolean {
+            if (self == grantee) settle(ahead)
+            return blocks(ahead, self)
+        }
+
+        private fun blocks(ahead: LookAhead, self: String): Boolean =
+            ahead.required.any { isTaken(it, self) } ||
+                (ahead.options.isNotEmpty() && ahead.options.all { option -> option.any { isTaken(it, self) } })
+
+        private fun isTaken(key: String, self: String): Boolean =
+            (self != grantee && key in held) || holders(key).any { it != self && it in waiting }
+
+        private fun settle(start: LookAhead) {
+            val near = LinkedHashMap<String, LookAhead>()
+            val queue = ArrayDeque<String>()
+            fun reach(ahead: LookAhead) {
+                for (key in ahead.required + ahead.options.flatten()) {
+                    for (holder in holders(key)) {
+                        if (holder != grantee && holder !in near) {
+                            near[holder] = lookAhead(holder)
+                            queue += holder
+                        }
+                    }
+                }
+            }
+            reach(start)
+            while (queue.isNotEmpty()) reach(near.getValue(queue.removeFirst()))
+            val order = near.keys.reversed()
+            do {
+                var changed = false
+                for (client in order) {
+                    if (client !in waiting && blocks(near.getValue(client), client)) {
+                        waiting += client
+                        changed = true
+                    }
+                }
+            } while (changed)
+        }
+    }
+
+    // The next step, every following step while on a two-way stretch, and the way out at the end of the claim.
+    private fun lookAhead(client: String, skipping: Set<String>? = null): LookAhead {
+        val exit = wayOut[client] ?: Exit.NONE
+        val route = routes[client] ?: return LookAhead(exit.required, exit.options)
+        val ahead = HashSet<String>()
+        var skipped = skipping == null
+        for (step in route) {
+            if (!skipped && step.keys == skipping) {
+                skipped = true
+                continue
+            }
+            ahead += step.keys
+            if (!step.twoWay) return LookAhead(ahead, emptyList())
+        }
+        ahead += exit.required
+        return LookAhead(ahead, exit.options)
+    }
+}
