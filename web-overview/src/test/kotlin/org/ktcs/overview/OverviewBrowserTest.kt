@@ -7,6 +7,7 @@ import com.microsoft.playwright.assertions.PlaywrightAssertions.assertThat
 import io.kotest.assertions.nondeterministic.eventually
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.collections.shouldBeIn
 import io.kotest.matchers.collections.shouldNotBeEmpty
 import io.kotest.matchers.doubles.shouldBeGreaterThan
 import io.kotest.matchers.shouldBe
@@ -172,6 +173,44 @@ class OverviewBrowserTest : FunSpec({
         page().locator("#details [data-action=unlock]").click()
         assertThat(page().locator("#toasts")).containsText("Unlock path $name: done")
         locked().jsonObject["locked"]!!.jsonPrimitive.boolean shouldBe false
+        page().locator("#details .close").click()
+    }
+
+    browserTest(
+        "a loopback vehicle left loaded says why it refuses a load; its load reset in the details lets it work",
+    ) {
+        val vehicle = "Vehicle-03"
+        val loaded = """{"type":"tcs:virtualVehicle:setLoaded","parameters":[{"key":"value","value":"true"}]}"""
+        ktcs!!.post("/v1/vehicles/$vehicle/commAdapter/message", loaded).statusCode() shouldBe 200
+        ktcs!!.post(
+            "/v1/transportOrders/Loaded-1",
+            """{"intendedVehicle":"$vehicle","destinations":[{"locationName":"Storage 01","operation":"Load cargo"},
+               {"locationName":"Goods out 01","operation":"Unload cargo"}]}""",
+        ).statusCode() shouldBe 200
+        page().locator("[data-tab=vehicles]").click()
+        page().locator("[data-vehicle='$vehicle']").click()
+        assertThat(page().locator("#details h2")).hasText("Vehicle $vehicle")
+        val reason = page().locator("#details tr")
+            .filter(Locator.FilterOptions().setHasText("Takes no orders because")).locator("td")
+        assertThat(reason).containsText("driver refused: cannotLoadWhenLoaded")
+        val loopback = page().locator("#details [data-role=loopback]")
+        assertThat(loopback.locator("[data-role=load-state]")).hasText("carries a load")
+        val orderState = {
+            Json.parseToJsonElement(ktcs!!.get("/v1/transportOrders/Loaded-1").body()).jsonObject["state"]!!
+                .jsonPrimitive.content
+        }
+        orderState() shouldBe "DISPATCHABLE"
+        loopback.scrollIntoViewIfNeeded()
+        watched.screenshot("vehicle-loaded")
+        page().setViewportSize(390, 844)
+        loopback.scrollIntoViewIfNeeded()
+        watched.screenshot("vehicle-loaded-phone")
+        page().setViewportSize(1440, 860)
+
+        loopback.locator("[data-action=reset-load]").click()
+        assertThat(page().locator("#toasts")).containsText("Reset load ($vehicle): done")
+        watched.screenshot("vehicle-load-reset")
+        eventually(20.seconds) { orderState() shouldBeIn setOf("BEING_PROCESSED", "FINISHED") }
         page().locator("#details .close").click()
     }
 
