@@ -44,7 +44,10 @@ internal class VehicleAvailability(private val run: DispatchRun) {
 
     private fun charging(vehicle: Vehicle): String? = when {
         vehicle.state != VehicleState.CHARGING || rechargedEnough(vehicle) -> null
-        else -> "charging (${vehicle.energyLevel}%)"
+
+        // No energy level in the text: a reason that changed with every percent would add history entries to every
+        // waiting order at each dispatcher run while the vehicle charges.
+        else -> "charging"
     }
 
     private fun rechargedEnough(vehicle: Vehicle): Boolean {

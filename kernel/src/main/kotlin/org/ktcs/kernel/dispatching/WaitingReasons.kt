@@ -33,13 +33,20 @@ internal class WaitingReasons(
     }
 
     private fun describeFleet(vehicles: List<Vehicle>): String {
-        val busy = vehicles.filter { it.name !in availableNames && !run.isAssigned(it) && it.transportOrder != null }
-            .filter { availability.reasons(it).singleOrNull() == availability.occupation(it) }
+        val busy = vehicles.filter(::isBusy)
         if (busy.size == vehicles.size) return "every vehicle is busy with an order: ${names(busy)}"
         val others = vehicles.filterNot { it in busy }.map(::refusal)
         val busyPart = if (busy.isEmpty()) emptyList() else listOf("busy with an order: ${names(busy)}")
         return (busyPart + describe(others)).joinToString("; ")
     }
+
+    // A vehicle given an order in this run is as busy as one given an order before it: naming the difference would
+    // change every waiting order's reason twice per assignment.
+    private fun isBusy(vehicle: Vehicle): Boolean = run.isAssigned(vehicle) || isOnlyOccupied(vehicle)
+
+    private fun isOnlyOccupied(vehicle: Vehicle): Boolean = vehicle.name !in availableNames &&
+        vehicle.transportOrder != null &&
+        availability.reasons(vehicle).singleOrNull() == availability.occupation(vehicle)
 
     private fun names(vehicles: List<Vehicle>): String {
         val sorted = vehicles.map { it.name }.sorted()

@@ -21,6 +21,21 @@ class IncrementalDispatchTest : FunSpec({
         context.assignments shouldBe emptyList()
     }
 
+    test("a vehicle taking the next order adds nothing to the histories of the orders still waiting") {
+        val context = FakeDispatchContext(plant())
+        val dispatcher = context.dispatcher()
+        context.add(vehicle("V1").processing("Busy1"), order("Busy1", state = TransportOrderState.BEING_PROCESSED))
+        context.add(vehicle("V2").processing("Busy2"), order("Busy2", state = TransportOrderState.BEING_PROCESSED))
+        context.add(*(1..5).map { order("T$it") }.toTypedArray())
+        dispatcher.dispatch()
+
+        context.add(vehicle("V2"), order("Busy2", state = TransportOrderState.FINISHED))
+        dispatcher.dispatch()
+
+        context.assignedOrder("V2") shouldBe "T1"
+        (2..5).forEach { context.deferralsOf("T$it") shouldBe listOf("every vehicle is busy with an order: V1, V2") }
+    }
+
     test("an order that became dispatchable while the vehicles were busy is assigned once one is free") {
         val context = FakeDispatchContext(plant())
         val dispatcher = context.dispatcher()
