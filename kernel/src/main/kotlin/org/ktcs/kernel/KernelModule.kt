@@ -11,6 +11,7 @@ import org.ktcs.api.scheduling.Scheduler
 import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.config.KtcsConfig
 import org.ktcs.kernel.config.KtcsSettings
+import org.ktcs.kernel.config.WatchdogSettings
 import org.ktcs.kernel.context.KernelContext
 import org.ktcs.kernel.core.KernelCore
 import org.ktcs.kernel.core.KernelOptions
@@ -63,11 +64,11 @@ fun kernelOptions(config: KtcsConfig) = KernelOptions(
     sweepAgeMillis = config[KtcsSettings.orderPoolSweepAge],
     deadlockCheckIntervalMillis = config[KtcsSettings.kernelDeadlockCheckInterval],
     watchdog = WatchdogOptions(
-        strandedVehicleCheckIntervalMillis = config[KtcsSettings.watchdogStrandedVehicleCheckInterval],
-        strandedVehicleMillis = config[KtcsSettings.watchdogStrandedVehicleDuration],
-        orderCheckIntervalMillis = config[KtcsSettings.watchdogTransportOrderCheckInterval],
-        idleOrderMillis = config[KtcsSettings.watchdogIdleTransportOrderDuration],
-        reportPositionOffRoute = config[KtcsSettings.watchdogPositionOffRoute],
+        strandedVehicleCheckIntervalMillis = config[WatchdogSettings.strandedVehicleCheckInterval],
+        strandedVehicleMillis = config[WatchdogSettings.strandedVehicleDuration],
+        orderCheckIntervalMillis = config[WatchdogSettings.transportOrderCheckInterval],
+        idleOrderMillis = config[WatchdogSettings.idleTransportOrderDuration],
+        reportPositionOffRoute = config[WatchdogSettings.positionOffRoute],
     ),
 )
 

@@ -1,5 +1,8 @@
 package org.ktcs.kernel.bench
 
+import org.ktcs.kernel.simulation.LowerBound
+import org.ktcs.kernel.simulation.Trip
+
 /**
  * The workload of issue #11 on any plant: [BenchOptions.orders] orders posted at once, run until every one is final
  * or none finished for [BenchOptions.stallSeconds]; the makespan next to its lower bound, what the kernel spent per
@@ -36,7 +39,8 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
             val wall = (end - start) / OrderPosting.NANOS_PER_SECOND
             figures.record("makespan_wall_s", wall)
             figures.record("makespan_simulated_s", wall * options.timeFactor)
-            figures.record("lower_bound_simulated_s", bound.seconds(batch, vehicles))
+            val trips = batch.map { Trip(it.from, BenchClient.LOAD, it.to, BenchClient.UNLOAD) }
+            figures.record("lower_bound_simulated_s", bound.seconds(trips, vehicles))
             val latencies = watcher.assignLatenciesMillis()
             figures.record("assign_latency_p50_ms", quantile(latencies, MEDIAN))
             figures.record("assign_latency_p99_ms", quantile(latencies, P99))

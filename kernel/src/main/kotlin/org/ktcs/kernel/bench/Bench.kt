@@ -6,6 +6,7 @@ import org.ktcs.kernel.app.ModelTools
 import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.persistence.PlantModelFiles
 import org.ktcs.kernel.simulation.Fleet
+import org.ktcs.kernel.simulation.LowerBound
 import java.io.File
 import java.io.PrintStream
 import java.net.ServerSocket

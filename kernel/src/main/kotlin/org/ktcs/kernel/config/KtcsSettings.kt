@@ -43,37 +43,6 @@ object KtcsSettings {
         false,
         "Let DELETE /v1/kernel shut kTCS down from this machine without the access key (it always needs one of the two).",
     )
-    val webTlsKeyStore = Setting(
-        "web.tls.keyStore",
-        "",
-        "PKCS12 or JKS key store with the certificate and key for HTTPS (empty: see web.tls.certificate; " +
-            "neither: plain HTTP).",
-        { it },
-    )
-    val webTlsKeyStorePassword = Setting(
-        "web.tls.keyStorePassword",
-        "",
-        "Password of web.tls.keyStore and of the key in it.",
-        { it },
-    )
-    val webTlsKeyAlias = Setting(
-        "web.tls.keyAlias",
-        "",
-        "Alias of the key in web.tls.keyStore (empty: the first key in it).",
-        { it },
-    )
-    val webTlsCertificate = Setting(
-        "web.tls.certificate",
-        "",
-        "PEM file with the HTTPS certificate (chain), used with web.tls.privateKey instead of a key store.",
-        { it },
-    )
-    val webTlsPrivateKey = Setting(
-        "web.tls.privateKey",
-        "",
-        "PEM file with the unencrypted PKCS#8 private key (BEGIN PRIVATE KEY) of web.tls.certificate.",
-        { it },
-    )
     val webMaxRequestBodySize = longSetting(
         "web.maxRequestBodySize",
         200,
@@ -313,37 +282,6 @@ object KtcsSettings {
             "or one an extension adds).",
     )
 
-    val watchdogStrandedVehicleCheckInterval = longSetting(
-        "watchdog.strandedVehicleCheckInterval",
-        10_000,
-        0L..86_400_000L,
-        "Milliseconds between checks for stranded vehicles (0: never).",
-    )
-    val watchdogStrandedVehicleDuration = longSetting(
-        "watchdog.strandedVehicleDurationThreshold",
-        60_000,
-        0L..86_400_000L,
-        "How long an idle vehicle may stand off a park position without an order (or hold an order without moving) " +
-            "before a notification says it is stranded.",
-    )
-    val watchdogTransportOrderCheckInterval = longSetting(
-        "watchdog.transportOrderCheckInterval",
-        10_000,
-        0L..86_400_000L,
-        "Milliseconds between checks for orders waiting too long or past their deadline (0: never).",
-    )
-    val watchdogIdleTransportOrderDuration = longSetting(
-        "watchdog.idleTransportOrderDurationThreshold",
-        60_000,
-        0L..86_400_000L,
-        "How long an order may wait unassigned before a notification says so, with its reason.",
-    )
-    val watchdogPositionOffRoute = booleanSetting(
-        "watchdog.reportPositionOffRoute",
-        true,
-        "Notify when a vehicle reports a position that is not on the route it was sent.",
-    )
-
     val extensionsDirectory = stringSetting(
         "extensions.directory",
         "extensions",
@@ -357,11 +295,7 @@ object KtcsSettings {
         webAccessKey,
         webAllowedOrigins,
         webAllowLocalShutdown,
-        webTlsKeyStore,
-        webTlsKeyStorePassword,
-        webTlsKeyAlias,
-        webTlsCertificate,
-        webTlsPrivateKey,
+    ) + TlsSettings.all + listOf(
         webMaxRequestBodySize,
         webSocketBufferSize,
         xmlOrdersPort,
@@ -404,13 +338,7 @@ object KtcsSettings {
         loopbackPositionReportInterval,
         overviewVehicleTheme,
         overviewLocationTheme,
-        watchdogStrandedVehicleCheckInterval,
-        watchdogStrandedVehicleDuration,
-        watchdogTransportOrderCheckInterval,
-        watchdogIdleTransportOrderDuration,
-        watchdogPositionOffRoute,
-        extensionsDirectory,
-    )
+    ) + WatchdogSettings.all + extensionsDirectory
 }
 
 /** Log levels a user can choose, in SLF4J's names. */

@@ -1,75 +1,49 @@
 package org.ktcs.kernel.simulation
 
 import org.ktcs.api.model.PlantModel
-import org.ktcs.api.order.TransportOrderCreation
-import org.ktcs.kernel.config.KtcsConfig
-import org.ktcs.kernel.config.KtcsSettings
-import java.util.PriorityQueue
+import org.ktcs.kernel.routing.DefaultRouter
+import org.ktcs.kernel.routing.EdgeEvaluator
+import org.ktcs.kernel.routing.RouterConfiguration
+
+/** One load/unload order as the [LowerBound] sees it: where it loads and unloads, with which operations. */
+data class Trip(val from: String, val loadOperation: String, val to: String, val unloadOperation: String)
 
 /**
- * A lower bound for the makespan of a batch of load/unload orders: the sum over the orders of the shortest travel
- * time from the load to the unload location plus both operation times, divided by the number of vehicles (no vehicle
- * can do better than drive straight at full speed and never wait or drive empty).
+ * A lower bound of a batch's makespan in simulated seconds: the sum over orders of the quickest drive from the load
+ * station to the unload station (path length over the lower of path and vehicle speed, as the kernel's router rates
+ * it with TRAVELTIME costs, no acceleration) plus both operations, divided by the number of vehicles. No fleet can do
+ * better: it would have to drive straight at full speed, never wait and never drive empty.
  */
-class LowerBound(private val model: PlantModel, config: KtcsConfig) {
-    private val operationSeconds = config[KtcsSettings.loopbackOperatingTime] / 1000.0
-    private val speed = model.vehicles.maxOfOrNull { it.maxVelocity }?.takeIf { it > 0 } ?: DEFAULT_VELOCITY
-    private val out = HashMap<String, MutableList<Pair<String, Double>>>().apply {
-        for (path in model.paths) {
-            val forward = minOf(path.maxVelocity, speed)
-            val reverse = minOf(path.maxReverseVelocity, speed)
-            if (forward >
-                0
-            ) {
-                getOrPut(path.sourcePoint, ::ArrayList) += path.destinationPoint to path.length / forward.toDouble()
-            }
-            if (reverse >
-                0
-            ) {
-                getOrPut(path.destinationPoint, ::ArrayList) += path.sourcePoint to path.length / reverse.toDouble()
-            }
-        }
+class LowerBound(private val model: PlantModel, private val operatingMillis: Long) {
+    private val router = DefaultRouter(RouterConfiguration(edgeEvaluators = listOf(EdgeEvaluator.TRAVELTIME))).also {
+        it.updateTopology(model)
     }
-    private val cache = HashMap<String, Map<String, Double>>()
+    private val vehicle = model.vehicles.maxByOrNull { it.maxVelocity }
+    private val costsFrom = HashMap<String, (String) -> Long?>()
 
-    fun seconds(orders: List<TransportOrderCreation>): Double {
-        val vehicles = model.vehicles.size.coerceAtLeast(1)
-        return orders.sumOf { order ->
-            val (load, unload) = order.destinations.map { it.target }
-            travelSeconds(load, unload) + 2 * operationSeconds
-        } / vehicles
+    /** The bound for [trips] on [vehicles] vehicles, `null` if the plant has no vehicle or a trip has no route. */
+    fun seconds(trips: List<Trip>, vehicles: Int): Double? {
+        if (vehicle == null || vehicles < 1) return null
+        var totalMillis = 0.0
+        for (trip in trips) totalMillis += (travelMillis(trip) ?: return null) + 2 * operatingMillis
+        return totalMillis / vehicles / MILLIS_PER_SECOND
     }
 
-    // Shortest time between any point linked to one location and any point linked to the other.
-    private fun travelSeconds(from: String, to: String): Double {
-        val targets = pointsOf(to)
-        return pointsOf(from).minOf { start ->
-            val times = cache.getOrPut(start) { fastestFrom(start) }
-            targets.minOf { times[it] ?: Double.POSITIVE_INFINITY }
-        }.takeIf { it.isFinite() } ?: 0.0
+    private fun travelMillis(trip: Trip): Long? {
+        val starts = linkedPoints(trip.from, trip.loadOperation)
+        val ends = linkedPoints(trip.to, trip.unloadOperation)
+        return starts.flatMap { start ->
+            val costs = costsFrom.getOrPut(start) { router.costsFrom(vehicle!!, start) }
+            ends.mapNotNull { costs(it) }
+        }.minOrNull()
     }
 
-    private fun pointsOf(target: String): List<String> =
-        model.location(target)?.links?.map { it.point } ?: listOf(target)
-
-    private fun fastestFrom(start: String): Map<String, Double> {
-        val best = HashMap<String, Double>().apply { put(start, 0.0) }
-        val queue = PriorityQueue<Pair<String, Double>>(compareBy { it.second }).apply { add(start to 0.0) }
-        while (queue.isNotEmpty()) {
-            val (point, time) = queue.poll()
-            if (time > best.getValue(point)) continue
-            for ((next, cost) in out[point].orEmpty()) {
-                val arrival = time + cost
-                if (arrival < (best[next] ?: Double.POSITIVE_INFINITY)) {
-                    best[next] = arrival
-                    queue += next to arrival
-                }
-            }
-        }
-        return best
-    }
+    private fun linkedPoints(location: String, operation: String): List<String> =
+        model.location(location)?.links.orEmpty()
+            .filter { it.allowedOperations.isEmpty() || operation in it.allowedOperations }
+            .map { it.point }
 
     private companion object {
-        const val DEFAULT_VELOCITY = 1000
+        const val MILLIS_PER_SECOND = 1000.0
     }
 }

@@ -102,7 +102,7 @@ class SimulationRunner(
                     routeComputations = router.durationsNanos.size,
                     doubleAllocations = audit.doubleAllocations,
                     sharedPositions = audit.sharedPositions,
-                    lowerBoundSeconds = LowerBound(model, config).seconds(creations),
+                    lowerBoundSeconds = lowerBound(creations),
                 )
             }
         }
@@ -132,6 +132,15 @@ class SimulationRunner(
     private fun TransportOrderEvent.isSimulationOrderEnding(): Boolean {
         val order = current ?: return false
         return order.name.startsWith(ORDER_PREFIX) && order.state.isFinal && previous?.state?.isFinal == false
+    }
+
+    private fun lowerBound(creations: List<TransportOrderCreation>): Double {
+        val trips = creations.map { order ->
+            val (load, unload) = order.destinations
+            Trip(load.target, load.operation, unload.target, unload.operation)
+        }
+        return LowerBound(model, config[KtcsSettings.loopbackOperatingTime])
+            .seconds(trips, model.vehicles.size) ?: 0.0
     }
 
     private fun randomOrder(index: Int): TransportOrderCreation {

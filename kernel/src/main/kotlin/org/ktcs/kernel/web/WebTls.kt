@@ -1,7 +1,7 @@
 package org.ktcs.kernel.web
 
 import org.ktcs.kernel.config.KtcsConfig
-import org.ktcs.kernel.config.KtcsSettings
+import org.ktcs.kernel.config.TlsSettings
 import java.nio.file.Files
 import java.nio.file.Path
 import java.security.GeneralSecurityException
@@ -21,16 +21,16 @@ class WebTls(val keyStore: KeyStore, val alias: String, val password: CharArray)
     companion object {
         /** The TLS material `web.tls.*` configures, or `null` for plain HTTP. */
         fun from(config: KtcsConfig): WebTls? {
-            val store = config[KtcsSettings.webTlsKeyStore]
-            val certificate = config[KtcsSettings.webTlsCertificate]
-            val key = config[KtcsSettings.webTlsPrivateKey]
-            val password = config[KtcsSettings.webTlsKeyStorePassword].toCharArray()
+            val store = config[TlsSettings.keyStore]
+            val certificate = config[TlsSettings.certificate]
+            val key = config[TlsSettings.privateKey]
+            val password = config[TlsSettings.keyStorePassword].toCharArray()
             return when {
                 store.isNotEmpty() && (certificate.isNotEmpty() || key.isNotEmpty()) -> throw InvalidTlsSettings(
                     "web.tls.keyStore and web.tls.certificate/web.tls.privateKey exclude each other; set one of them",
                 )
 
-                store.isNotEmpty() -> fromKeyStore(Path.of(store), password, config[KtcsSettings.webTlsKeyAlias])
+                store.isNotEmpty() -> fromKeyStore(Path.of(store), password, config[TlsSettings.keyAlias])
 
                 certificate.isNotEmpty() || key.isNotEmpty() -> fromPem(certificate, key)
 
