@@ -1,6 +1,7 @@
 package org.ktcs.kernel.dispatching
 
 import org.ktcs.api.order.Operations
+import org.ktcs.kernel.routing.lockedPathsOnWay
 
 /** The outcome of checking whether a vehicle can do an order. */
 internal sealed interface Assessment {
@@ -39,10 +40,18 @@ internal class CandidateChecks(private val run: DispatchRun, private val availab
     ): Assessment {
         beforeRouting.firstRefusal(candidate)?.let { return Assessment.Refused(it) }
         val driveOrders = run.routes.route(candidate.vehicle, candidate.order)
-            ?: return Assessment.Refused(refusal(candidate, "no route from ${candidate.vehicle.currentPosition}"))
+            ?: return Assessment.Refused(refusal(candidate, noRoute(candidate)))
         val routed = candidate.routed(driveOrders)
         afterRouting.firstRefusal(routed)?.let { return Assessment.Refused(it) }
         return Assessment.Accepted(routed)
+    }
+
+    /** Names the locked paths in the way, so that operators know what to unlock. */
+    private fun noRoute(candidate: Candidate): String {
+        val position = candidate.vehicle.currentPosition ?: return "no route: position unknown"
+        val locked = run.model.lockedPathsOnWay(position, candidate.order)
+        val blocking = if (locked.isEmpty()) "" else " (locked path ${locked.joinToString()} blocks the way)"
+        return "no route from $position$blocking"
     }
 
     private fun List<CandidateFilter>.firstRefusal(candidate: Candidate): Refusal? =

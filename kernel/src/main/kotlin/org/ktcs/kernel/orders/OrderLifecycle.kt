@@ -65,7 +65,34 @@ class OrderLifecycle(
         val order = orders.get(name) ?: return
         if (order.state != ACTIVE) return
         val waitingFor = order.dependencies.filter { orders.get(it)?.state != FINISHED }
-        if (waitingFor.isEmpty()) orders.transition(name, DISPATCHABLE)
+        if (waitingFor.isNotEmpty()) {
+            val reason = dependenciesText(waitingFor)
+            if (order.waitingReason() != reason) noteWaiting(order, reason)
+        } else {
+            if (order.waitingReason() != null) noteWaiting(order, null)
+            orders.transition(name, DISPATCHABLE)
+        }
+    }
+
+    private fun dependenciesText(unfinished: List<String>): String {
+        val failed = unfinished.filter { orders.get(it)?.state?.isFinal == true }
+        val open = unfinished - failed.toSet()
+        val parts = listOfNotNull(
+            open.takeIf { it.isNotEmpty() }?.let { "dependencies not finished: ${it.sorted().joinToString()}" },
+            failed.takeIf { it.isNotEmpty() }?.let {
+                "dependencies failed, so it never becomes dispatchable (withdraw it): ${it.sorted().joinToString()}"
+            },
+        )
+        return parts.joinToString("; ")
+    }
+
+    /** Records why an ACTIVE order waits ([reason]), or that it no longer does (`null`), in its history. */
+    private fun noteWaiting(order: TransportOrder, reason: String?) {
+        if (reason == null) {
+            orders.addHistory(order.name, HistoryCodes.ORDER_DISPATCHING_RESUMED, "dependencies finished")
+        } else {
+            orders.addHistory(order.name, HistoryCodes.ORDER_DISPATCHING_DEFERRED, reason)
+        }
     }
 
     private fun onFinal(order: TransportOrder) {

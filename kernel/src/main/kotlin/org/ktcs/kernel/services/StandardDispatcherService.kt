@@ -59,7 +59,10 @@ class StandardDispatcherService(private val kernel: KernelCore) : DispatcherServ
     }
 
     override suspend fun reroute(vehicle: String, forced: Boolean) = kernel.context.call {
-        kernel.controllers.controller(vehicle).reroute(emptySet())
+        kernel.plant.vehicle(vehicle)
+        kernel.controllers.controller(vehicle).reroute(emptySet(), forced)?.let {
+            throw IllegalStateChangeException("cannot reroute vehicle '$vehicle': $it")
+        }
         Unit
     }
 }

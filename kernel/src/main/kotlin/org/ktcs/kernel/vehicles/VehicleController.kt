@@ -11,6 +11,7 @@ import org.ktcs.api.order.Route
 import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.api.scheduling.SchedulerClient
+import org.ktcs.kernel.routing.lockedPathsBetween
 import org.ktcs.kernel.workingset.HistoryCodes
 import org.slf4j.LoggerFactory
 
@@ -320,20 +321,38 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
     }
 
     /**
-     * Routes the rest of the current drive order anew from where the vehicle will be after the commands it was
-     * already sent, around [avoid]; returns whether a route was found. Used to break deadlocks and on request.
+     * Routes the rest of the current drive order anew around [avoid]; returns whether a route was found. Used to
+     * break deadlocks.
      */
-    fun reroute(avoid: Set<String>): Boolean {
-        val order = currentOrder?.let(env.orders::require) ?: return false
-        if (withdrawing) return false
+    fun reroute(avoid: Set<String>): Boolean = reroute(avoid, forced = false) == null
+
+    /**
+     * Routes the rest of the current drive order anew around [avoid], as openTCS's rerouting does: a regular reroute
+     * starts where the vehicle will be after the commands it was already sent; a [forced] one starts from the
+     * vehicle's current position (also when that is not where its route expects it): the driver's queue is
+     * cleared and everything but the position is given back, so use it only on a vehicle that stands still.
+     * Returns why it could not reroute, or null if the vehicle follows a new route (or has nothing left to reroute).
+     */
+    fun reroute(avoid: Set<String>, forced: Boolean): String? {
+        val order = currentOrder?.let(env.orders::require) ?: return "vehicle $name has no transport order"
+        if (withdrawing) return "the order ${order.name} of vehicle $name is being withdrawn"
         val driveOrder = order.driveOrders[order.currentDriveOrderIndex]
-        val oldRoute = driveOrder.route ?: return false
-        val start =
-            sent.lastOrNull()?.command?.step?.destinationPoint ?: env.plant.vehicle(name).currentPosition
-                ?: return false
-        val target = oldRoute.finalDestinationPoint ?: return false
-        if (start == target) return false
-        val found = env.router().routes(env.plant.vehicle(name), start, target, avoid).firstOrNull() ?: return false
+        val oldRoute = driveOrder.route ?: return "drive order ${driveOrder.name} has no route"
+        val position = env.plant.vehicle(name).currentPosition ?: return "the position of vehicle $name is unknown"
+        val expected = sent.lastOrNull()?.command?.step?.destinationPoint
+            ?: oldRoute.steps.getOrNull(order.currentRouteStepIndex)?.destinationPoint
+            ?: oldRoute.steps.firstOrNull()?.let { it.sourcePoint ?: it.destinationPoint }
+            ?: position
+        if (!forced && sent.isEmpty() && position != expected) {
+            return "vehicle $name stands at $position, not at $expected where its route goes on; a forced reroute " +
+                "starts from where it stands"
+        }
+        val start = if (forced) position else expected
+        val target = oldRoute.finalDestinationPoint ?: return "drive order ${driveOrder.name} has no destination"
+        if (start == target && !forced) return null
+        val found = env.router().routes(env.plant.vehicle(name), start, target, avoid).firstOrNull()
+            ?: return "no route for vehicle $name from $start to $target" + lockedPathsText(start, target)
+        if (forced) restartFrom(start)
         val kept = oldRoute.steps.take(order.currentRouteStepIndex + 1 + sent.size)
         val route =
             Route(kept + found.steps.mapIndexed { i, step -> step.copy(routeIndex = kept.size + i) }, found.costs)
@@ -351,10 +370,29 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
                 env.plant.staticModel().location(it)?.name
             }.drop(kept.size),
         )
+        if (remaining.isEmpty() && sent.isEmpty()) {
+            // Forced from the destination point itself: the drive order's movement is done.
+            finishDriveOrder()
+            return null
+        }
         claimRestOfOrder(order, order.currentDriveOrderIndex)
         publishResources()
         requestNext()
-        return true
+        return null
+    }
+
+    /** Forgets the commands sent to the driver and holds only [position], where a forced reroute starts. */
+    private fun restartFrom(position: String) {
+        driver?.clearCommandQueue()
+        sent.clear()
+        val heldPosition = position in held.all()
+        env.scheduler().free(this, held.releaseAllBut(setOf(position)))
+        if (!heldPosition) env.scheduler().allocateNow(this, setOf(position))
+    }
+
+    private fun lockedPathsText(start: String, target: String): String {
+        val locked = env.plant.topology().lockedPathsBetween(start, target)
+        return if (locked.isEmpty()) "" else ": locked path ${locked.joinToString()} blocks the way"
     }
 
     /**

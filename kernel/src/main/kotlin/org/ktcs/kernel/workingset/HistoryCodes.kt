@@ -5,6 +5,7 @@ object HistoryCodes {
     const val ORDER_CREATED = "tcs:history:orderCreated"
     const val ORDER_ASSIGNED = "tcs:history:orderAssignedToVehicle"
     const val ORDER_DISPATCHING_DEFERRED = "tcs:history:orderDispatchingDeferred"
+    const val ORDER_DISPATCHING_RESUMED = "tcs:history:orderDispatchingResumed"
     const val ORDER_FINISHED_DRIVE_ORDER = "tcs:history:orderFinishedDriveOrder"
     const val ORDER_REACHED_FINAL_STATE = "tcs:history:orderReachedFinalState"
     const val SEQUENCE_CREATED = "tcs:history:sequenceCreated"

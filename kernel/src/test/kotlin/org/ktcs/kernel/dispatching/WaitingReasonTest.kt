@@ -2,6 +2,10 @@ package org.ktcs.kernel.dispatching
 
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.shouldBe
+import org.ktcs.api.model.Path
+import org.ktcs.api.model.PlantModel
+import org.ktcs.api.model.Point
+import org.ktcs.api.model.Vehicle
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.kernel.app.PlantModelLoader
@@ -70,6 +74,54 @@ class WaitingReasonTest : FunSpec({
             kernel.now {
                 kernel.core.plant.setLocationLocked("Goods out 02", false)
                 kernel.core.dispatch()
+            }
+            kernel.reason("T") shouldBe null
+        }
+    }
+
+    test("unfinished dependencies are named while the order is ACTIVE, failed ones too, and gone once finished") {
+        SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
+            kernel.now { kernel.core.controllers.setPaused("Vehicle-02", true) }
+            kernel.order("First", vehicle = "Vehicle-01")
+            kernel.order("Other", vehicle = "Vehicle-02")
+            kernel.now {
+                createTransportOrder(TransportOrderCreation("Then", trip, dependencies = setOf("First", "Other")))
+            }
+            kernel.core.orders.require("Then").state.name shouldBe "ACTIVE"
+            kernel.reason("Then") shouldBe "dependencies not finished: First, Other"
+            kernel.context.runUntil { kernel.core.orders.require("First").state.isFinal }
+            kernel.reason("Then") shouldBe "dependencies not finished: Other"
+            kernel.now { kernel.core.controllers.setPaused("Vehicle-02", false) }
+            kernel.context.runUntil { kernel.core.orders.require("Then").state.name != "ACTIVE" }
+            kernel.reason("Then") shouldBe null
+        }
+    }
+
+    test("a failed dependency is named: the order can never be dispatched") {
+        SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
+            kernel.order("First", vehicle = "Vehicle-01")
+            kernel.now {
+                createTransportOrder(TransportOrderCreation("Then", trip, dependencies = setOf("First")))
+                withdraw("First", true, false)
+            }
+            kernel.reason("Then") shouldBe
+                "dependencies failed, so it never becomes dispatchable (withdraw it): First"
+        }
+    }
+
+    test("no route: the locked path in the way is named, and the reason is gone once it is unlocked") {
+        val line = PlantModel(
+            "line",
+            points = listOf("A", "B", "C").map { Point(it) },
+            paths = listOf(Path("A --- B", "A", "B", 1_000), Path("B --- C", "B", "C", 1_000, locked = true)),
+            vehicles = listOf(Vehicle("V", properties = mapOf("loopback:initialPosition" to "A"))),
+        )
+        SimulationKernel(line, config, listOf(drivers.module)).use { kernel ->
+            kernel.now { createTransportOrder(TransportOrderCreation("T", listOf(Destination("C", "MOVE")))) }
+            kernel.reason("T") shouldBe "vehicle V: no route from A (locked path B --- C blocks the way)"
+            kernel.now {
+                setPathLocked("B --- C", false)
+                dispatch()
             }
             kernel.reason("T") shouldBe null
         }

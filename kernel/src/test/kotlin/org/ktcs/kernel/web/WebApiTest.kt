@@ -131,6 +131,9 @@ class WebApiTest : FunSpec({
             val vehicle = json(call("GET", "$base/vehicles/Vehicle-02")).jsonObject
             vehicle["integrationLevel"]!!.jsonPrimitive.content shouldBe "TO_BE_RESPECTED"
             call("GET", "$base/vehicles/Vehicle-02/commAdapter/attachmentInformation").body() shouldContain "step"
+            val reroute = call("POST", "$base/vehicles/Vehicle-02/rerouteRequest?forced=true")
+            reroute.statusCode() shouldBe 409
+            reroute.body() shouldContain "vehicle Vehicle-02 has no transport order"
 
             call("POST", "$base/orderSequences/S1", """{"properties":[]}""").statusCode() shouldBe 200
             call("PUT", "$base/orderSequences/S1/complete").statusCode() shouldBe 200

@@ -1,0 +1,91 @@
+package org.ktcs.kernel.core
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
+import org.ktcs.api.model.Path
+import org.ktcs.api.model.PlantModel
+import org.ktcs.api.model.Point
+import org.ktcs.api.model.Vehicle
+import org.ktcs.api.order.Destination
+import org.ktcs.api.order.TransportOrderCreation
+import org.ktcs.api.order.TransportOrderState
+import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.simulation.SimulationKernel
+
+/** Rerouting on request, as openTCS's operators know it: regular from where the route goes on, forced from where the vehicle stands. */
+class RerouteTest : FunSpec({
+    val config = ConfigLoader().load(
+        null,
+        emptyMap(),
+        listOf("dispatcher.parkIdleVehicles=false", "dispatcher.rechargeIdleVehicles=false"),
+    )
+    // A -> W -> X -> B -> D is the way; Y, off it, has a path of its own to D.
+    val model = PlantModel(
+        "reroute",
+        points = listOf("A", "W", "X", "B", "D", "Y").map { Point(it) },
+        paths = listOf(
+            Path("A --- W", "A", "W", 10_000),
+            Path("W --- X", "W", "X", 10_000),
+            Path("X --- B", "X", "B", 1_000),
+            Path("B --- D", "B", "D", 1_000),
+            Path("Y --- D", "Y", "D", 2_000),
+        ),
+        vehicles = listOf(Vehicle("V", properties = mapOf("loopback:initialPosition" to "A"))),
+    )
+
+    fun SimulationKernel.now(action: KernelCore.() -> Unit) = execute(settleMillis = 50, action)
+
+    fun SimulationKernel.reroute(forced: Boolean): String? {
+        var refusal: String? = null
+        now { refusal = controllers.controller("V").reroute(emptySet(), forced) }
+        return refusal
+    }
+
+    /** V gets the order to D, is paused once under way and stands at X, then is carried by hand to Y. */
+    fun SimulationKernel.carriedOffItsRoute(drivers: RecordingStepDrivers) {
+        now { createTransportOrder(TransportOrderCreation("T", listOf(Destination("D", "MOVE")))) }
+        context.runUntilTime(context.elapsedMillis() + 1_000)
+        now { controllers.setPaused("V", true) }
+        context.runUntilTime(context.elapsedMillis() + 30_000)
+        core.plant.vehicle("V").currentPosition shouldBe "X"
+        now { drivers.contexts.getValue("V").reportPosition("Y") }
+    }
+
+    test("a vehicle without an order is not rerouted, and says why") {
+        val drivers = RecordingStepDrivers()
+        SimulationKernel(model, config, listOf(drivers.module)).use { kernel ->
+            kernel.reroute(forced = false) shouldBe "vehicle V has no transport order"
+            kernel.reroute(forced = true) shouldBe "vehicle V has no transport order"
+        }
+    }
+
+    test("regular rerouting refuses a vehicle off its route; forced rerouting starts where it stands") {
+        val drivers = RecordingStepDrivers()
+        SimulationKernel(model, config, listOf(drivers.module)).use { kernel ->
+            kernel.carriedOffItsRoute(drivers)
+            kernel.reroute(forced = false)!! shouldContain "stands at Y, not at X"
+            kernel.reroute(forced = true) shouldBe null
+            kernel.core.plant.vehicle("V").allocatedResources shouldBe listOf(setOf("Y"))
+            kernel.now { controllers.setPaused("V", false) }
+            kernel.context.runUntil { kernel.core.orders.require("T").state.isFinal }
+            kernel.core.orders.require("T").state shouldBe TransportOrderState.FINISHED
+            kernel.core.orders.require("T").driveOrders.single().route!!.steps.map { it.path } shouldBe
+                listOf("A --- W", "W --- X", "Y --- D")
+        }
+    }
+
+    test("without a route the vehicle keeps its route, and the refusal names the locked path in the way") {
+        val drivers = RecordingStepDrivers()
+        SimulationKernel(model, config, listOf(drivers.module)).use { kernel ->
+            kernel.now { setPathLocked("Y --- D", true) }
+            kernel.carriedOffItsRoute(drivers)
+            kernel.reroute(forced = true) shouldBe
+                "no route for vehicle V from Y to D: locked path Y --- D blocks the way"
+            kernel.core.orders.require("T").driveOrders.single().route!!.steps.map { it.path } shouldBe
+                listOf("A --- W", "W --- X", "X --- B", "B --- D")
+            kernel.now { setPathLocked("Y --- D", false) }
+            kernel.reroute(forced = true) shouldBe null
+        }
+    }
+})
