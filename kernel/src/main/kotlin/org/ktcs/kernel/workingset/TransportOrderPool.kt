@@ -66,11 +66,11 @@ class TransportOrderPool(private val events: EventBus, private val clock: Kernel
         )
     }
 
-    /** Changes anything but the state. */
     /** Adds a history entry with [code] and [supplement], stamped now, to order [name]. */
     fun addHistory(name: String, code: String, supplement: String): TransportOrder =
         update(name) { it.copy(history = it.history + HistoryEntry(clock.now(), code, supplement)) }
 
+    /** Changes anything but the state. */
     fun update(name: String, change: (TransportOrder) -> TransportOrder): TransportOrder {
         val order = require(name)
         val changed = change(order)
