@@ -6,6 +6,8 @@ import { outcomeOf } from './orders-view.js';
 import { act, enc } from './actions.js';
 import { vehicleActions } from './vehicle-actions.js';
 import { loopbackActions } from './loopback-actions.js';
+import { operatorActions } from './operator-actions.js';
+import { historyTable, sequenceFacts } from './order-history.js';
 
 export class Details {
   constructor(container, { ktcs, client }) {
@@ -14,9 +16,22 @@ export class Details {
     this.client = client;
     this.plant = null;
     this.selection = null;
+    // An order named in the details (a sequence's orders) opens that order's details.
+    container.addEventListener('click', (event) => {
+      const order = event.target.closest?.('[data-order]')?.getAttribute('data-order');
+      if (order) this.show({ kind: 'order', name: order });
+    });
   }
 
   show(selection) {
+    // A target being picked for "send vehicle to" takes the next point or location clicked, not the details.
+    if (this.pick && (selection?.kind === 'point' || selection?.kind === 'location')) {
+      const pick = this.pick;
+      this.pick = null;
+      pick(selection);
+      return;
+    }
+    this.pick = null;
     this.selection = selection;
     this.plant?.select(selection);
     this.plant?.highlightRoute(selection?.kind === 'order' ? this.orderPaths(selection.name) : []);
@@ -54,6 +69,7 @@ export class Details {
     const model = this.ktcs.model();
     if (kind === 'vehicle') return this.client.state.get('vehicles')?.get(name);
     if (kind === 'order') return this.client.state.get('transportOrders')?.get(name);
+    if (kind === 'sequence') return this.client.state.get('orderSequences')?.get(name);
     if (!model) return null;
     const list = { point: model.points, path: model.paths, location: model.locations }[kind] ?? [];
     return list.find((element) => element.name === name);
@@ -91,6 +107,8 @@ export class Details {
         return vehicleFacts(object);
       case 'order':
         return orderFacts(object);
+      case 'sequence':
+        return sequenceFacts(object, this.client.state.get('transportOrders'));
       default:
         return [];
     }
@@ -106,7 +124,11 @@ export class Details {
         el('button', { type: 'button', 'data-action': 'unlock', onclick: () => setLocked(false) }, 'Unlock'),
       ];
     }
-    if (kind === 'vehicle') return vehicleActions(this.ktcs, name, this.objectOf({ kind, name })?.integrationLevel);
+    if (kind === 'vehicle') {
+      const vehicle = this.objectOf({ kind, name });
+      return [...vehicleActions(this.ktcs, name, vehicle?.integrationLevel),
+        ...operatorActions(this.ktcs, name, vehicle, (pick) => { this.pick = pick; })];
+    }
     if (kind === 'order') {
       if (FINAL.has(this.objectOf({ kind, name })?.state)) return [];
       const withdraw = (immediate) => act(this.ktcs, `Withdraw ${name}${immediate ? ' immediately' : ''}`,
@@ -121,7 +143,7 @@ export class Details {
 }
 
 function kindTitle(kind) {
-  return { point: 'Point', path: 'Path', location: 'Location', vehicle: 'Vehicle', order: 'Order' }[kind] ?? kind;
+  return { point: 'Point', path: 'Path', location: 'Location', vehicle: 'Vehicle', order: 'Order', sequence: 'Order sequence' }[kind] ?? kind;
 }
 
 function properties(list) {
@@ -172,6 +194,8 @@ function orderFacts(order) {
     el('div', { className: 'route' }, driveOrder.route
       ? `Route: ${driveOrder.route.steps.map((s) => s.destinationPoint).join(' → ')} (costs ${driveOrder.route.costs})`
       : (final ? 'Route: none (the order ended before it was routed)' : 'Route: not yet computed'))))),
+    el('h3', {}, 'History'),
+    historyTable(order.history?.entries ?? []),
     properties(order.properties),
   ];
 }

@@ -6,6 +6,7 @@ import { PlantView } from './plant-view.js';
 import { loadThemes } from './themes.js';
 import { Tabs } from './tabs.js';
 import { OrdersView } from './orders-view.js';
+import { SequencesView } from './sequences-view.js';
 import { VehiclesView } from './vehicles-view.js';
 import { NotificationsView } from './notifications-view.js';
 import { Details } from './details.js';
@@ -13,6 +14,7 @@ import { OrderDialog } from './order-dialog.js';
 import { mountPanels } from './panels.js';
 import { installLayerToggles, summaryOf } from './layers.js';
 import { throttle } from './throttle.js';
+import { installFleetControls } from './fleet-controls.js';
 
 const toasts = document.getElementById('toasts');
 const MAX_TOASTS = 5;
@@ -95,10 +97,12 @@ async function start() {
   const dialog = new OrderDialog(document.getElementById('order-dialog'), { ktcs, client });
   new VehiclesView(tabs.add('vehicles', 'Vehicles'), { client, details });
   new OrdersView(tabs.add('orders', 'Orders'), { client, details, dialog });
+  new SequencesView(tabs.add('sequences', 'Sequences'), { client, details });
   new NotificationsView(tabs.add('notifications', 'Notifications'), { client, tabs });
   await mountPanels(extensions, tabs, ktcs, notify);
   tabs.activate('vehicles');
   installPlantControls(plant);
+  installFleetControls(document.getElementById('fleet-controls'), { ktcs, client, plant });
   installConnectionIndicator(client);
 
   let refitAfterReplacement = false;
@@ -130,6 +134,7 @@ async function start() {
     plant.vehicles.setVehicles(client.objects('vehicles'));
     refreshDetails();
   });
+  client.subscribe('orderSequences', () => refreshDetails());
   client.subscribe('transportOrders', () => {
     plant.vehicles.setOrders(client.state.get('transportOrders') ?? new Map());
     refreshDetails();
@@ -154,6 +159,9 @@ function exposeForDiagnostics(plant, client, themes) {
     drawnRoutes: () => [...plant.vehicles.drawnRoutes].sort(),
     highlightedRoute: () => [...plant.highlightedRoute],
     pagePositionOf: (kind, name) => plant.pagePositionOf(kind, name),
+    /** The vehicle the view follows (null if none) and the boxes of the vehicle labels drawn last. */
+    following: () => plant.following ?? null,
+    vehicleLabels: () => plant.vehicles.labelBoxes.map((box) => ({ ...box })),
     connected: () => client.connected,
     /** The style the configured vehicle theme gives a vehicle now. */
     vehicleStyle: (name) => {

@@ -49,22 +49,29 @@ export class OrderDialog {
   addDestination(model) {
     const operations = el('select', { name: 'operation', 'aria-label': 'Operation' });
     const target = el('select', { name: 'destination', 'aria-label': 'Destination', onchange: () => fillOperations() },
-      el('optgroup', { label: 'Locations' },
-        [...model.locations].sort(byName).map((l) => el('option', { value: `location:${l.name}` }, l.name))),
-      el('optgroup', { label: 'Points' },
-        [...model.points].sort(byName).map((p) => el('option', { value: `point:${p.name}` }, p.name))));
+      targetOptions(model));
     const fillOperations = () => fill(operations, operationsFor(model, target.value).map((op) => el('option', { value: op }, op)));
     fillOperations();
+    const properties = el('div', { className: 'destination-properties' });
     const row = el('div', { className: 'destination-row' }, target, operations,
-      el('button', { type: 'button', title: 'Remove', onclick: () => row.remove() }, '×'));
+      el('button', { type: 'button', 'data-action': 'add-property', title: 'Add a property for the vehicle at this destination', onclick: () => properties.append(propertyPair()) }, '+ Property'),
+      el('button', { type: 'button', title: 'Remove', onclick: () => row.remove() }, '×'),
+      properties);
     this.rows.append(row);
   }
 
   async submit(event) {
     event.preventDefault();
-    const destinations = [...this.rows.querySelectorAll('.destination-row')].map((row) => ({
+    const rows = [...this.rows.querySelectorAll('.destination-row')];
+    const problem = rows.map((row, i) => propertiesProblem(pairsOf(row), i + 1)).find(Boolean);
+    if (problem) {
+      this.error.textContent = problem;
+      return;
+    }
+    const destinations = rows.map((row) => ({
       locationName: row.querySelector('[name=destination]').value.replace(/^(location|point):/, ''),
       operation: row.querySelector('[name=operation]').value,
+      properties: pairsOf(row).filter((p) => p.key !== '' || p.value !== ''),
     }));
     if (destinations.length === 0) {
       this.error.textContent = 'Add at least one destination.';
@@ -97,7 +104,45 @@ export class OrderDialog {
   }
 }
 
-function operationsFor(model, value) {
+function propertyPair() {
+  const pair = el('span', { className: 'property-pair' },
+    el('input', { name: 'property-key', placeholder: 'key', size: 12, 'aria-label': 'Property key' }),
+    el('input', { name: 'property-value', placeholder: 'value', size: 12, 'aria-label': 'Property value' }),
+    el('button', { type: 'button', title: 'Remove property', onclick: () => pair.remove() }, '×'));
+  return pair;
+}
+
+function pairsOf(row) {
+  return [...row.querySelectorAll('.property-pair')].map((pair) => ({
+    key: pair.querySelector('[name=property-key]').value.trim(),
+    value: pair.querySelector('[name=property-value]').value,
+  }));
+}
+
+/** What is wrong with destination [number]'s properties (a value without key, a key given twice), or null. */
+export function propertiesProblem(pairs, number) {
+  const seen = new Set();
+  for (const { key, value } of pairs) {
+    if (key === '' && value === '') continue;
+    if (key === '') return `Destination ${number}: the property with value '${value}' needs a key.`;
+    if (seen.has(key)) return `Destination ${number}: property '${key}' is given twice.`;
+    seen.add(key);
+  }
+  return null;
+}
+
+/** The model's locations and points as option groups, valued `location:NAME` / `point:NAME`. */
+export function targetOptions(model) {
+  return [
+    el('optgroup', { label: 'Locations' },
+      [...model.locations].sort(byName).map((l) => el('option', { value: `location:${l.name}` }, l.name))),
+    el('optgroup', { label: 'Points' },
+      [...model.points].sort(byName).map((p) => el('option', { value: `point:${p.name}` }, p.name))),
+  ];
+}
+
+/** The operations a target (`location:NAME` or `point:NAME`) offers. */
+export function operationsFor(model, value) {
   if (value.startsWith('point:')) return POINT_OPERATIONS;
   const location = model.locations.find((l) => `location:${l.name}` === value);
   const type = model.locationTypes.find((t) => t.name === location?.typeName);

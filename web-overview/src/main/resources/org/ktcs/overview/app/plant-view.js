@@ -113,7 +113,39 @@ export class PlantView {
     });
   }
 
+  /**
+   * Centres the view on vehicle [name] ("find"); with [follow] it stays centred while the vehicle moves, until the
+   * operator pans. Answers whether the vehicle is drawn at all (it is not without a position).
+   */
+  centreOnVehicle(name, follow = false) {
+    const pose = this.vehicles.modelPositionAt(name, performance.now());
+    this.following = follow && pose ? name : null;
+    this.onFollowChange?.(this.following);
+    if (!pose) return false;
+    this.userMoved = true;
+    this.view.centreOn(pose.x, pose.y, this.width, this.height);
+    this.invalidate();
+    return true;
+  }
+
+  /** The operator panned: following a vehicle ends. */
+  stopFollowing() {
+    if (!this.following) return;
+    this.following = null;
+    this.onFollowChange?.(null);
+  }
+
+  keepFollowing(now) {
+    const pose = this.following && this.vehicles.modelPositionAt(this.following, now);
+    if (!pose) return;
+    const before = this.view.toScreen(pose.x, pose.y);
+    if (Math.abs(before.x - this.width / 2) < 0.5 && Math.abs(before.y - this.height / 2) < 0.5) return;
+    this.view.centreOn(pose.x, pose.y, this.width, this.height);
+    this.staticDirty = true;
+  }
+
   drawFrame(now) {
+    this.keepFollowing(now);
     if (this.staticDirty) {
       this.drawStatic();
       this.staticDirty = false;

@@ -39,6 +39,7 @@ export function installPointerInput(plant) {
     drag.y = event.offsetY;
     if (drag.moved > 4) {
       plant.userMoved = true;
+      plant.stopFollowing();
       plant.view.pan(dx, dy);
       plant.invalidate();
     }

@@ -15,6 +15,7 @@ export class VehicleLayer {
     // What the last frame drew as held resources and routes ahead, by name (for diagnostics and tests).
     this.drawnResources = new Set();
     this.drawnRoutes = new Set();
+    this.labelBoxes = [];
   }
 
   /** Takes a (possibly different) model's geometry: every vehicle is placed afresh, not glided from old points. */
@@ -66,6 +67,7 @@ export class VehicleLayer {
     this.drawn.clear();
     this.drawnResources.clear();
     this.drawnRoutes.clear();
+    this.labelBoxes = [];
     for (const vehicle of this.vehicles.values()) this.drawResources(ctx, vehicle);
     for (const vehicle of this.vehicles.values()) this.drawRouteAhead(ctx, vehicle);
     for (const vehicle of this.vehicles.values()) {
@@ -113,12 +115,27 @@ export class VehicleLayer {
       ctx.textBaseline = 'bottom';
       ctx.lineWidth = 3;
       ctx.strokeStyle = 'rgba(255,255,255,0.85)';
-      ctx.strokeText(style.label, p.x, p.y - length / 2 - 6);
+      const y = this.freeLabelY(ctx, style.label, p.x, p.y - length / 2 - 6);
+      ctx.strokeText(style.label, p.x, y);
       ctx.fillStyle = style.labelColour ?? '#111';
-      ctx.fillText(style.label, p.x, p.y - length / 2 - 6);
+      ctx.fillText(style.label, p.x, y);
       ctx.restore();
     }
     this.drawn.set(vehicle.name, { x: p.x, y: p.y, radius: Math.max(length, width) / 2 + 4 });
+  }
+
+  /**
+   * The baseline for a label centred at x that covers no label drawn before it in this frame: vehicles side by side
+   * (a queue, a charging row) would otherwise write their names over each other. Moves up one line at a time.
+   */
+  freeLabelY(ctx, text, x, y) {
+    const width = ctx.measureText(text).width + 4;
+    const box = (baseline) => ({ minX: x - width / 2, maxX: x + width / 2, minY: baseline - LABEL_HEIGHT, maxY: baseline });
+    const overlaps = (a) => this.labelBoxes.some((b) => a.minX < b.maxX && b.minX < a.maxX && a.minY < b.maxY && b.minY < a.maxY);
+    let baseline = y;
+    for (let tries = 0; tries < MAX_LABEL_SHIFTS && overlaps(box(baseline)); tries += 1) baseline -= LABEL_HEIGHT;
+    this.labelBoxes.push(box(baseline));
+    return baseline;
   }
 
   drawEnergy(ctx, vehicle, p, length) {
@@ -200,6 +217,12 @@ export class VehicleLayer {
     ctx.restore();
   }
 
+  /** Where vehicle [name] is drawn at time [now], in model coordinates; null if it has no position. */
+  modelPositionAt(name, now) {
+    const track = this.tracks.get(name);
+    return track ? interpolate(track, now) : null;
+  }
+
   drawnPosition(name) {
     const drawn = this.drawn.get(name);
     return drawn ? { x: drawn.x, y: drawn.y } : null;
@@ -214,6 +237,9 @@ export class VehicleLayer {
     return best?.name ?? null;
   }
 }
+
+const LABEL_HEIGHT = 13;
+const MAX_LABEL_SHIFTS = 6;
 
 function interpolate(track, now) {
   const t = track.duration <= 0 ? 1 : Math.min(1, (now - track.start) / track.duration);

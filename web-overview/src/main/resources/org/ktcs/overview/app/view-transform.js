@@ -38,6 +38,12 @@ export class ViewTransform {
     this.offsetY = screenY + anchor.y * this.scale;
   }
 
+  /** Puts model point (x, y) in the middle of a canvas of this size, at the current scale. */
+  centreOn(x, y, width, height) {
+    this.offsetX = width / 2 - x * this.scale;
+    this.offsetY = height / 2 + y * this.scale;
+  }
+
   pan(dx, dy) {
     this.offsetX += dx;
     this.offsetY += dy;
