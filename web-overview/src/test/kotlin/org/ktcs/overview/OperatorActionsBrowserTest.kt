@@ -4,7 +4,6 @@ import com.microsoft.playwright.Page
 import com.microsoft.playwright.assertions.PlaywrightAssertions.assertThat
 import io.kotest.assertions.nondeterministic.eventually
 import io.kotest.core.spec.style.FunSpec
-import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.doubles.plusOrMinus
@@ -23,26 +22,15 @@ import kotlin.time.Duration.Companion.seconds
  * (demo plant, loopback vehicles): each action is done in the page and checked in the kernel through the web API.
  */
 class OperatorActionsBrowserTest : FunSpec({
-    var ktcs: RunningKtcs? = null
-    var session: Chromium.Session? = null
-    lateinit var watched: Chromium.WatchedPage
-    val page: () -> Page = { watched.page }
+    val shared = SharedOverview()
+    val ktcs: () -> RunningKtcs = { shared.ktcs!! }
+    val page: () -> Page = { shared.watched.page }
 
     fun browserTest(name: String, body: suspend () -> Unit) = test(name) {
-        Chromium.assumeAvailable()
-        if (session == null) {
-            ktcs = RunningKtcs()
-            session = Chromium.start()
-            watched = session!!.newPage()
-            watched.page.navigate(ktcs!!.baseUrl + "/")
-            watched.page.waitForFunction("() => window.ktcsOverview && window.ktcsOverview.connected()")
-            watched.page.waitForFunction("() => window.ktcsOverview.drawn().vehicles === 4")
-        }
-        body()
-        watched.errors.shouldBeEmpty()
+        shared.run("() => window.ktcsOverview && window.ktcsOverview.drawn().vehicles === 4", body)
     }
 
-    fun json(path: String) = Json.parseToJsonElement(ktcs!!.get(path).body())
+    fun json(path: String) = Json.parseToJsonElement(ktcs().get(path).body())
 
     fun vehicle(name: String): JsonObject = json("/v1/vehicles/$name").jsonObject
 
@@ -56,10 +44,7 @@ class OperatorActionsBrowserTest : FunSpec({
 
     fun toast(text: String) = assertThat(page().locator("#toasts")).containsText(text)
 
-    afterSpec {
-        session?.close()
-        ktcs?.close()
-    }
+    afterSpec { shared.close() }
 
     browserTest("pause all and resume all act on every vehicle and say how many") {
         page().locator("[data-action=pause-all]").click()
@@ -83,7 +68,7 @@ class OperatorActionsBrowserTest : FunSpec({
         assertThat(page().locator("#details [name=send-target]")).hasValue("location:Goods out 01")
         assertThat(page().locator("#details h2")).hasText("Vehicle Vehicle-02")
         assertThat(page().locator("#details [name=send-operation]")).hasValue("NOP")
-        watched.screenshot("operator-send-to")
+        shared.watched.screenshot("operator-send-to")
         page().locator("#details [data-action=send]").click()
         toast("Send Vehicle-02 to Goods out 01: done")
         val sent = orders().single { it["name"]!!.jsonPrimitive.content.startsWith("Send-") }
@@ -91,12 +76,12 @@ class OperatorActionsBrowserTest : FunSpec({
         val name = sent["name"]!!.jsonPrimitive.content
         eventually(10.seconds) { json("/v1/transportOrders/$name").toString() shouldContain "BEING_PROCESSED" }
         // Paused, the vehicle stands still with its order: a reroute has something to do.
-        ktcs!!.put("/v1/vehicles/Vehicle-02/paused?newValue=true").statusCode() shouldBe 200
+        ktcs().put("/v1/vehicles/Vehicle-02/paused?newValue=true").statusCode() shouldBe 200
         page().locator("#details [data-action=reroute]").click()
         toast("Reroute (Vehicle-02): done")
         page().locator("#details [data-action=reroute-forced]").click()
         toast("Forced reroute (Vehicle-02): done")
-        ktcs!!.put("/v1/vehicles/Vehicle-02/paused?newValue=false").statusCode() shouldBe 200
+        ktcs().put("/v1/vehicles/Vehicle-02/paused?newValue=false").statusCode() shouldBe 200
         eventually(60.seconds) {
             json("/v1/transportOrders/$name").jsonObject["state"]!!.jsonPrimitive.content shouldBe "FINISHED"
         }
@@ -132,7 +117,7 @@ class OperatorActionsBrowserTest : FunSpec({
         for (width in listOf(1920, 1440, 1024, 390)) {
             page().setViewportSize(width, if (width == 390) 844 else 1000)
             details.locator("[data-action=reroute]").scrollIntoViewIfNeeded()
-            watched.screenshot("operator-actions-$width")
+            shared.watched.screenshot("operator-actions-$width")
         }
         page().setViewportSize(1440, 860)
         page().locator("#details .close").click()
@@ -175,7 +160,7 @@ class OperatorActionsBrowserTest : FunSpec({
                 overlap shouldBe false
             }
         }
-        watched.screenshot("operator-labels-zoomed-out")
+        shared.watched.screenshot("operator-labels-zoomed-out")
         page().locator("#fit").click()
     }
 
@@ -191,7 +176,7 @@ class OperatorActionsBrowserTest : FunSpec({
         dialog.locator("[data-action=create-order]").click()
         assertThat(dialog.locator(".form-error")).hasText("Destination 1: the property with value 'slow' needs a key.")
         dialog.locator("[name=property-key]").first().fill("speed")
-        watched.screenshot("operator-destination-properties")
+        shared.watched.screenshot("operator-destination-properties")
         dialog.locator("[data-action=create-order]").click()
         toast("Created transport order With-Properties")
         val order = json("/v1/transportOrders/With-Properties").jsonObject
@@ -201,8 +186,8 @@ class OperatorActionsBrowserTest : FunSpec({
     }
 
     browserTest("the order details show its history; the sequences view lists sequences with their orders") {
-        ktcs!!.post("/v1/orderSequences/Seq-1", """{"failureFatal":true,"properties":[]}""").statusCode() shouldBe 200
-        ktcs!!.post(
+        ktcs().post("/v1/orderSequences/Seq-1", """{"failureFatal":true,"properties":[]}""").statusCode() shouldBe 200
+        ktcs().post(
             "/v1/transportOrders/In-Seq-1",
             """{"wrappingSequence":"Seq-1","destinations":[{"locationName":"Storage 01","operation":"Load cargo"}]}""",
         ).statusCode() shouldBe 200
@@ -213,14 +198,14 @@ class OperatorActionsBrowserTest : FunSpec({
         assertThat(page().locator("#details h2")).hasText("Order sequence Seq-1")
         assertThat(page().locator("#details")).containsText("Failure fatal")
         assertThat(page().locator("#details .sequence-orders")).containsText("In-Seq-1")
-        watched.screenshot("operator-sequence")
+        shared.watched.screenshot("operator-sequence")
         page().locator("#details .sequence-orders [data-order='In-Seq-1']").click()
         assertThat(page().locator("#details h2")).hasText("Order In-Seq-1")
         val history = page().locator("#details [data-view=history]")
         assertThat(history).containsText("created")
         page().evaluate("() => { const d = document.getElementById('details'); d.scrollTop = d.scrollHeight; }")
-        watched.screenshot("operator-order-history")
-        ktcs!!.put("/v1/orderSequences/Seq-1/complete").statusCode() shouldBe 200
+        shared.watched.screenshot("operator-order-history")
+        ktcs().put("/v1/orderSequences/Seq-1/complete").statusCode() shouldBe 200
         page().locator("[data-tab=sequences]").click()
         eventually(60.seconds) {
             json("/v1/orderSequences/Seq-1").jsonObject["finished"]!!.jsonPrimitive.boolean shouldBe true
