@@ -5,9 +5,9 @@ import com.microsoft.playwright.assertions.PlaywrightAssertions.assertThat
 import io.kotest.assertions.nondeterministic.eventually
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldContain
-import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.doubles.plusOrMinus
 import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
 import kotlinx.serialization.json.Json
 import kotlinx.serialization.json.JsonObject
 import kotlinx.serialization.json.boolean
@@ -95,7 +95,12 @@ class OperatorActionsBrowserTest : FunSpec({
         details.locator("[data-action=save-thresholds]").click()
         toast("Energy thresholds (Vehicle-03) not saved: critical (50) must not be above good (30)")
         listOf("10", "40", "60", "90").zip(
-            listOf("energyLevelCritical", "energyLevelGood", "energyLevelSufficientlyRecharged", "energyLevelFullyRecharged"),
+            listOf(
+                "energyLevelCritical",
+                "energyLevelGood",
+                "energyLevelSufficientlyRecharged",
+                "energyLevelFullyRecharged",
+            ),
         ).forEach { (value, field) -> details.locator("[name=$field]").fill(value) }
         details.locator("[data-action=save-thresholds]").click()
         toast("Energy thresholds (Vehicle-03): done")
@@ -128,7 +133,9 @@ class OperatorActionsBrowserTest : FunSpec({
         page().locator("[name=follow]").check()
         page().evaluate("() => window.ktcsOverview.following()") shouldBe "Vehicle-01"
         val canvas = page().locator("#plant-canvas").boundingBox()
-        val centre = { page().evaluate("() => window.ktcsOverview.pagePositionOf('vehicle', 'Vehicle-01')") as Map<*, *> }
+        val centre = {
+            page().evaluate("() => window.ktcsOverview.pagePositionOf('vehicle', 'Vehicle-01')") as Map<*, *>
+        }
         eventually(5.seconds) {
             (centre()["x"] as Number).toDouble() shouldBe (canvas.x + canvas.width / 2 plusOrMinus 2.0)
             (centre()["y"] as Number).toDouble() shouldBe (canvas.y + canvas.height / 2 plusOrMinus 2.0)

@@ -46,10 +46,13 @@ internal class CandidateChecks(private val run: DispatchRun, private val availab
         return Assessment.Accepted(routed)
     }
 
+    // One look at the plant per run, and only once an order found no route: most plants lock no path at all.
+    private val anyPathLocked: Boolean by lazy { run.model.paths.any { it.locked } }
+
     /** Names the locked paths in the way, so that operators know what to unlock. */
     private fun noRoute(candidate: Candidate): String {
         val position = candidate.vehicle.currentPosition ?: return "no route: position unknown"
-        val locked = run.model.lockedPathsOnWay(position, candidate.order)
+        val locked = if (anyPathLocked) run.model.lockedPathsOnWay(position, candidate.order) else emptyList()
         val blocking = if (locked.isEmpty()) "" else " (locked path ${locked.joinToString()} blocks the way)"
         return "no route from $position$blocking"
     }

@@ -4,6 +4,11 @@ import { el, fill, onRowPress } from './dom.js';
 import { throttle } from './throttle.js';
 import { sequenceState } from './order-history.js';
 
+const HEADINGS = [
+  ['Sequence'], ['Progress'], ['Vehicle'], ['Complete', 'Complete: no more orders can be appended'],
+  ['Fatal', 'Failure fatal: a failed order fails the orders after it'],
+];
+
 export class SequencesView {
   constructor(container, { client, details }) {
     this.client = client;
@@ -13,7 +18,7 @@ export class SequencesView {
     fill(container,
       el('div', { className: 'view-toolbar' }, this.count),
       el('table', { className: 'grid', 'data-view': 'sequences' },
-        el('thead', {}, el('tr', {}, ['Sequence', 'State', 'Vehicle', 'Complete', 'Failure fatal'].map((t) => el('th', {}, t)))),
+        el('thead', {}, el('tr', {}, HEADINGS.map(([text, title]) => el('th', { title }, text)))),
         this.body));
     const render = throttle(() => this.render(), 250);
     client.subscribe('orderSequences', render);
