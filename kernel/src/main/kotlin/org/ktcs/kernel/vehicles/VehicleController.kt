@@ -5,6 +5,7 @@ import org.ktcs.api.driver.VehicleDriver
 import org.ktcs.api.event.NotificationLevel
 import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.model.ProcState
+import org.ktcs.api.order.DriveOrder
 import org.ktcs.api.order.DriveOrderState
 import org.ktcs.api.order.HistoryEntry
 import org.ktcs.api.order.Route
@@ -321,38 +322,64 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
     }
 
     /**
-     * Routes the rest of the current drive order anew around [avoid]; returns whether a route was found. Used to
-     * break deadlocks.
+     * Routes the rest of the current drive order anew around [avoid], from where the vehicle will be after the commands
+     * it was already sent; returns whether it now follows a new route. Used to break deadlocks.
      */
-    fun reroute(avoid: Set<String>): Boolean = reroute(avoid, forced = false) == null
+    fun reroute(avoid: Set<String>): Boolean = attemptReroute(avoid, forced = false, onRequest = false) == Rerouted
 
     /**
      * Routes the rest of the current drive order anew around [avoid], as openTCS's rerouting does: a regular reroute
-     * starts where the vehicle will be after the commands it was already sent; a [forced] one starts from the
-     * vehicle's current position (also when that is not where its route expects it): the driver's queue is
-     * cleared and everything but the position is given back, so use it only on a vehicle that stands still.
-     * Returns why it could not reroute, or null if the vehicle follows a new route (or has nothing left to reroute).
+     * starts where the vehicle will be after the commands it was already sent (and is refused for a vehicle that
+     * stands off its route); a [forced] one starts from the vehicle's current position, also off its route: the
+     * driver's queue is cleared and everything but the position is given back, so use it only on a vehicle that
+     * stands still. Returns why it could not reroute, or null if the vehicle follows a new route (or has nothing
+     * left to reroute).
      */
-    fun reroute(avoid: Set<String>, forced: Boolean): String? {
-        val order = currentOrder?.let(env.orders::require) ?: return "vehicle $name has no transport order"
-        if (withdrawing) return "the order ${order.name} of vehicle $name is being withdrawn"
+    fun reroute(avoid: Set<String>, forced: Boolean): String? =
+        (attemptReroute(avoid, forced, onRequest = true) as? Refused)?.reason
+
+    private sealed interface RerouteOutcome
+
+    private data object Rerouted : RerouteOutcome
+
+    private data object NothingLeft : RerouteOutcome
+
+    private data class Refused(val reason: String) : RerouteOutcome
+
+    private fun attemptReroute(avoid: Set<String>, forced: Boolean, onRequest: Boolean): RerouteOutcome {
+        val order = currentOrder?.let(env.orders::require) ?: return Refused("vehicle $name has no transport order")
+        if (withdrawing) return Refused("the order ${order.name} of vehicle $name is being withdrawn")
         val driveOrder = order.driveOrders[order.currentDriveOrderIndex]
-        val oldRoute = driveOrder.route ?: return "drive order ${driveOrder.name} has no route"
-        val position = env.plant.vehicle(name).currentPosition ?: return "the position of vehicle $name is unknown"
-        val expected = sent.lastOrNull()?.command?.step?.destinationPoint
-            ?: oldRoute.steps.getOrNull(order.currentRouteStepIndex)?.destinationPoint
-            ?: oldRoute.steps.firstOrNull()?.let { it.sourcePoint ?: it.destinationPoint }
-            ?: position
-        if (!forced && sent.isEmpty() && position != expected) {
-            return "vehicle $name stands at $position, not at $expected where its route goes on; a forced reroute " +
-                "starts from where it stands"
+        val oldRoute = driveOrder.route ?: return Refused("drive order ${driveOrder.name} has no route")
+        val position = env.plant.vehicle(name).currentPosition
+            ?: return Refused("the position of vehicle $name is unknown")
+        val sentEnd = sent.lastOrNull()?.command?.step?.destinationPoint
+        if (onRequest && !forced && sentEnd == null) {
+            val expected = expectedPosition(order.currentRouteStepIndex, oldRoute) ?: position
+            if (position != expected) {
+                return Refused(
+                    "vehicle $name stands at $position, not at $expected where its route goes on; a forced " +
+                        "reroute starts from where it stands",
+                )
+            }
         }
-        val start = if (forced) position else expected
-        val target = oldRoute.finalDestinationPoint ?: return "drive order ${driveOrder.name} has no destination"
-        if (start == target && !forced) return null
+        val start = if (forced) position else sentEnd ?: position
+        val target = oldRoute.finalDestinationPoint
+            ?: return Refused("drive order ${driveOrder.name} has no destination")
+        if (start == target && !forced) return NothingLeft
         val found = env.router().routes(env.plant.vehicle(name), start, target, avoid).firstOrNull()
-            ?: return "no route for vehicle $name from $start to $target" + lockedPathsText(start, target)
+            ?: return Refused("no route for vehicle $name from $start to $target" + lockedPathsText(start, target))
         if (forced) restartFrom(start)
+        followNewRoute(order, driveOrder, oldRoute, found)
+        return Rerouted
+    }
+
+    /** Where the route expects the vehicle once it carried out every command sent: after step [stepIndex]. */
+    private fun expectedPosition(stepIndex: Int, route: Route): String? =
+        route.steps.getOrNull(stepIndex)?.destinationPoint
+            ?: route.steps.firstOrNull()?.let { it.sourcePoint ?: it.destinationPoint }
+
+    private fun followNewRoute(order: TransportOrder, driveOrder: DriveOrder, oldRoute: Route, found: Route) {
         val kept = oldRoute.steps.take(order.currentRouteStepIndex + 1 + sent.size)
         val route =
             Route(kept + found.steps.mapIndexed { i, step -> step.copy(routeIndex = kept.size + i) }, found.costs)
@@ -370,15 +397,9 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
                 env.plant.staticModel().location(it)?.name
             }.drop(kept.size),
         )
-        if (remaining.isEmpty() && sent.isEmpty()) {
-            // Forced from the destination point itself: the drive order's movement is done.
-            finishDriveOrder()
-            return null
-        }
         claimRestOfOrder(order, order.currentDriveOrderIndex)
         publishResources()
         requestNext()
-        return null
     }
 
     /** Forgets the commands sent to the driver and holds only [position], where a forced reroute starts. */

@@ -88,4 +88,17 @@ class RerouteTest : FunSpec({
             kernel.reroute(forced = true) shouldBe null
         }
     }
+
+    test("a vehicle already sent to its destination has nothing to reroute: not counted as rerouted, not refused") {
+        val drivers = RecordingStepDrivers()
+        SimulationKernel(model, config, listOf(drivers.module)).use { kernel ->
+            kernel.now { createTransportOrder(TransportOrderCreation("T", listOf(Destination("W", "MOVE")))) }
+            kernel.context.runUntilTime(kernel.context.elapsedMillis() + 1_000)
+            var rerouted: Boolean? = null
+            kernel.now { rerouted = controllers.controller("V").reroute(emptySet()) }
+            // The deadlock watchdog relies on this: a vehicle that did not change its way did not resolve anything.
+            rerouted shouldBe false
+            kernel.reroute(forced = false) shouldBe null
+        }
+    }
 })
