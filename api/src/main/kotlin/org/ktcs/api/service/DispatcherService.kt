@@ -18,6 +18,11 @@ public interface DispatcherService {
     /** Assigns a DISPATCHABLE order to its intended vehicle now, if that vehicle is free for it. */
     public suspend fun assignNow(order: String)
 
-    /** Computes a new route for the rest of the vehicle's order from where it is now. */
+    /**
+     * Computes a new route for the rest of the vehicle's current drive order: regular from where the vehicle will be
+     * after the commands it was already sent, [forced] from where it stands (also off its route; the commands sent are
+     * dropped, so only for a vehicle that stands still). Throws an IllegalStateChangeException naming why when the
+     * vehicle has no order, stands off its route (regular) or no route leads on.
+     */
     public suspend fun reroute(vehicle: String, forced: Boolean = false)
 }
