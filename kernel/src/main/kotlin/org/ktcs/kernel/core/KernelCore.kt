@@ -155,7 +155,7 @@ class KernelCore(
                 )
             }
         }
-        lifecycle.onSequenceCompleted(name)
+        lifecycle.onSequenceCompleted(name, context.now())
     }
 
     /** Gives the DISPATCHABLE [order] to the idle [vehicle] with routed [driveOrders]. */
