@@ -92,7 +92,7 @@ class IdleBlockers(private val kernel: KernelCore) {
             other.allocatedResources.forEach(taken::addAll)
             other.claimedResources.forEach(taken::addAll)
         }
-        val model = kernel.plant.topology()
+        val model = kernel.plant.layoutWithLocks()
         val linked = model.locations.flatMapTo(HashSet()) { location -> location.links.map { it.point } }
         val costs = kernel.router.costsFrom(vehicle, vehicle.currentPosition!!)
         return model.points.asSequence()

@@ -87,7 +87,7 @@ class KernelCore(
     /** Starts the strategies, the vehicles and the periodic tasks; call in the kernel context. */
     fun start() {
         router.initialize()
-        router.updateTopology(plant.topology())
+        router.updateTopology(plant.layoutWithLocks())
         scheduler.initialize()
         recoveryEvaluator.initialize()
         dispatcherProvider().initialize()
@@ -118,7 +118,7 @@ class KernelCore(
         orders.contains(name) || sequences.get(name) != null || plant.staticModel().objectNamed(name) != null
 
     fun createTransportOrder(creation: TransportOrderCreation): TransportOrder {
-        val order = factory.create(creation, plant.topology(), ::nameTaken, orders::contains, sequences::get)
+        val order = factory.create(creation, plant.layoutWithLocks(), ::nameTaken, orders::contains, sequences::get)
         orders.add(order)
         return orders.require(order.name)
     }
@@ -208,7 +208,7 @@ class KernelCore(
      */
     fun setPathLocked(path: String, locked: Boolean) {
         plant.setPathLocked(path, locked)
-        router.updateTopology(plant.topology())
+        router.updateTopology(plant.layoutWithLocks())
         if (locked) {
             plant.vehicles().filter { vehicle -> vehicle.claimedResources.any { path in it } }.forEach { vehicle ->
                 if (!controllers.controller(vehicle.name).reroute(emptySet())) {
@@ -240,8 +240,8 @@ class KernelCore(
         sequences.removeFinished()
         dispatchable.clear()
         plant.replace(model)
-        router.updateTopology(plant.topology())
-        scheduler.updatePlantModel(plant.topology())
+        router.updateTopology(plant.layoutWithLocks())
+        scheduler.updatePlantModel(plant.layoutWithLocks())
         controllers.start(options.enableDriversOnStart, options.initialIntegrationLevel)
         announceTrafficLimits()
         trigger.request()
@@ -249,7 +249,7 @@ class KernelCore(
 
     // Where the plant itself defeats deadlock avoidance (dead ends with several stops), operators hear it at once.
     private fun announceTrafficLimits() {
-        PlantModelValidator.trafficWarnings(plant.topology()).forEach {
+        PlantModelValidator.trafficWarnings(plant.layoutWithLocks()).forEach {
             notifications.publish("traffic control", NotificationLevel.IMPORTANT, "${it.element}: ${it.message}")
         }
     }

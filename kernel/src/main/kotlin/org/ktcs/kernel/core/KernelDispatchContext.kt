@@ -27,7 +27,7 @@ class KernelDispatchContext(private val kernel: KernelCore) : DispatchContext {
 
     override val router: Router get() = kernel.router
 
-    override fun plantModel(): PlantModel = kernel.plant.topology()
+    override fun plantModel(): PlantModel = kernel.plant.layoutWithLocks()
 
     override fun vehicles(): Collection<Vehicle> = kernel.plant.vehicles()
 
