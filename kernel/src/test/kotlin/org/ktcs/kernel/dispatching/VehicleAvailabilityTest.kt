@@ -85,7 +85,7 @@ class VehicleAvailabilityTest : FunSpec({
 
     test("every filter that objects gives its reason, and an available vehicle has none") {
         val context = FakeDispatchContext(plant())
-        val availability = VehicleAvailability(DispatchRun(context, assignOnly, DefaultRecoveryEvaluator()))
+        val availability = VehicleAvailability.of(DispatchRun(context, assignOnly, DefaultRecoveryEvaluator()))
         val unready = vehicle("V1", at = null).copy(paused = true, integrationLevel = IntegrationLevel.TO_BE_RESPECTED)
 
         availability.reasons(unready) shouldContainExactly
