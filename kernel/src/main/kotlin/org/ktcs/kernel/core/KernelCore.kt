@@ -161,9 +161,7 @@ class KernelCore(
     /** Gives the DISPATCHABLE [order] to the idle [vehicle] with routed [driveOrders]. */
     fun assign(order: String, vehicle: String, driveOrders: List<DriveOrder>) {
         val current = orders.require(order)
-        if (current.state !=
-            TransportOrderState.DISPATCHABLE
-        ) {
+        if (current.state != TransportOrderState.DISPATCHABLE) {
             throw IllegalStateChangeException("transport order '$order' is ${current.state}, not DISPATCHABLE")
         }
         orders.update(order) {
@@ -287,9 +285,7 @@ class KernelCore(
         val order = event.current
         if (order == null || order.state != TransportOrderState.DISPATCHABLE) {
             (order ?: event.previous)?.let { dispatchable.remove(it.name) }
-            if (order != null && order.state.isFinal &&
-                order.processingVehicle != null
-            ) {
+            if (order != null && order.state.isFinal && order.processingVehicle != null) {
                 dispatchContext.onVehicleFree(order.processingVehicle!!)
             }
             return

@@ -20,9 +20,10 @@ import org.ktcs.api.order.TransportOrderState
  * sequence's orders until the sequence is finished (or it does the sequence's dispensable last order), and a vehicle
  * takes only orders of a type it accepts.
  *
- * [rechargedEnough] is the dispatcher's charging policy (see [DispatcherConfiguration.keepRechargingUntilFullyCharged]);
- * outside the dispatcher nobody holds a charging vehicle back (an operator's `assignNow` is obeyed at once, and an order
- * that moves a vehicle out of the way waits in the dispatcher like any other).
+ * [rechargedEnough] is the dispatcher's charging policy (see
+ * [DispatcherConfiguration.keepRechargingUntilFullyCharged]); outside the dispatcher nobody holds a charging vehicle
+ * back (an operator's `assignNow` is obeyed at once, and an order that moves a vehicle out of the way waits in the
+ * dispatcher like any other).
  */
 class VehicleAvailability(
     private val order: (String) -> TransportOrder?,
@@ -108,7 +109,11 @@ class VehicleAvailability(
             if (run.configuration.keepRechargingUntilFullyCharged) {
                 vehicle.energyLevel >= thresholds.fullyRecharged
             } else {
-                run.recovery.isRecovered(vehicle.energyLevel, thresholds.sufficientlyRecharged, thresholds.fullyRecharged)
+                run.recovery.isRecovered(
+                    vehicle.energyLevel,
+                    thresholds.sufficientlyRecharged,
+                    thresholds.fullyRecharged,
+                )
             }
         }
     }

@@ -95,9 +95,7 @@ class OrderLifecycle(
     private fun failUnfinished(name: String) {
         val order = orders.get(name) ?: return
         if (order.state.isFinal) return
-        if (order.state !=
-            WITHDRAWN
-        ) {
+        if (order.state != WITHDRAWN) {
             orders.transition(name, WITHDRAWN, "an earlier order of its failure-fatal sequence failed")
         }
         orders.transition(name, FAILED, "an earlier order of its failure-fatal sequence failed")

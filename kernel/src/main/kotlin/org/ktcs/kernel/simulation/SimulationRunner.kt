@@ -5,7 +5,6 @@ import org.ktcs.api.event.KernelEvent
 import org.ktcs.api.event.TransportOrderEvent
 import org.ktcs.api.event.VehicleEvent
 import org.ktcs.api.model.PlantModel
-import org.ktcs.kernel.dispatching.VehicleAvailability
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
@@ -14,6 +13,7 @@ import org.ktcs.kernel.config.KtcsConfig
 import org.ktcs.kernel.config.KtcsSettings
 import org.ktcs.kernel.context.RealTimeKernelContext
 import org.ktcs.kernel.context.VirtualTimeKernelContext
+import org.ktcs.kernel.dispatching.VehicleAvailability
 import org.ktcs.kernel.extension.KtcsExtension
 import org.ktcs.kernel.routerConfiguration
 import org.ktcs.kernel.routing.DefaultRouter

@@ -76,12 +76,12 @@ class ControllerDriverContext(
     override fun commandFailed(command: MovementCommand) = later { controller.onCommandFailed(command) }
 
     override fun setVehicleProperty(key: String, value: String?) = later {
-        env.plant.updateVehicle(vehicleName) { it.copy(properties = it.properties.with(key, value)) }
+        env.plant.updateVehicle(vehicleName) { it.copy(properties = it.properties.setOrRemove(key, value)) }
     }
 
     override fun setTransportOrderProperty(key: String, value: String?) = later {
         controller.transportOrder?.let { order ->
-            env.orders.update(order) { it.copy(properties = it.properties.with(key, value)) }
+            env.orders.update(order) { it.copy(properties = it.properties.setOrRemove(key, value)) }
         }
     }
 
@@ -106,11 +106,7 @@ class ControllerDriverContext(
         env.context.execute { if (!retired) action() }
     }
 
-    private fun Map<String, String>.with(key: String, value: String?): Map<String, String> = if (value ==
-        null
-    ) {
-        this - key
-    } else {
-        this + (key to value)
-    }
+    /** A copy with [key] set to [value], or without [key] if [value] is null (how drivers remove a property). */
+    private fun Map<String, String>.setOrRemove(key: String, value: String?): Map<String, String> =
+        if (value == null) this - key else this + (key to value)
 }
