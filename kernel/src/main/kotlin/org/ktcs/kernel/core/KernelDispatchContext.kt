@@ -78,7 +78,7 @@ class KernelDispatchContext(private val kernel: KernelCore) : DispatchContext {
         kernel.plant.updateVehicle(vehicle) { it.copy(waitingReason = reason) }
     }
 
-    override fun deferred(order: String, reason: String) {
+    override fun orderWaiting(order: String, reason: String) {
         kernel.orders.update(order) { current ->
             val last = current.history.lastOrNull { it.eventCode == HistoryCodes.ORDER_DISPATCHING_DEFERRED }
             if (last?.supplement == reason) {
