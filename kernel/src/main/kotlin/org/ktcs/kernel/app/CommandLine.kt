@@ -181,8 +181,7 @@ object CommandLine {
                 "--orders" -> options.copy(orders = positive(name, value()))
 
                 "--seed" -> options.copy(
-                    seed =
-                    value().toLongOrNull() ?: throw UsageException("--seed expects a whole number"),
+                    seed = value().toLongOrNull() ?: throw UsageException("--seed expects a whole number"),
                 )
 
                 "--virtual-time" -> options.copy(realTime = false)
@@ -263,8 +262,7 @@ object CommandLine {
                 "--set" -> options.copy(settings = options.settings + value())
 
                 "--seed" -> options.copy(
-                    seed =
-                    value().toLongOrNull() ?: throw UsageException("--seed expects a whole number"),
+                    seed = value().toLongOrNull() ?: throw UsageException("--seed expects a whole number"),
                 )
 
                 "--cpu-batches" -> options.copy(cpuBatches = value().split(',').map { positive(name, it.trim()) })

@@ -150,8 +150,7 @@ class KernelCore(
             } else {
                 it.copy(
                     complete = true,
-                    history =
-                    it.history + HistoryEntry(context.now(), HistoryCodes.SEQUENCE_COMPLETED),
+                    history = it.history + HistoryEntry(context.now(), HistoryCodes.SEQUENCE_COMPLETED),
                 )
             }
         }
@@ -168,8 +167,7 @@ class KernelCore(
             it.copy(
                 processingVehicle = vehicle,
                 driveOrders = driveOrders,
-                history =
-                it.history + HistoryEntry(context.now(), HistoryCodes.ORDER_ASSIGNED, vehicle),
+                history = it.history + HistoryEntry(context.now(), HistoryCodes.ORDER_ASSIGNED, vehicle),
             )
         }
         orders.transition(order, TransportOrderState.BEING_PROCESSED)

@@ -84,11 +84,8 @@ class KernelDispatchContext(private val kernel: KernelCore) : DispatchContext {
             if (last?.supplement == reason) {
                 current
             } else {
-                current.copy(
-                    history =
-                    current.history +
-                        HistoryEntry(kernel.context.now(), HistoryCodes.ORDER_DISPATCHING_DEFERRED, reason),
-                )
+                val entry = HistoryEntry(kernel.context.now(), HistoryCodes.ORDER_DISPATCHING_DEFERRED, reason)
+                current.copy(history = current.history + entry)
             }
         }
     }
