@@ -412,7 +412,7 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
     }
 
     private fun lockedPathsText(start: String, target: String): String {
-        val locked = env.plant.topology().lockedPathsBetween(start, target)
+        val locked = env.plant.layoutWithLocks().lockedPathsBetween(start, target)
         return if (locked.isEmpty()) "" else ": locked path ${locked.joinToString()} blocks the way"
     }
 
