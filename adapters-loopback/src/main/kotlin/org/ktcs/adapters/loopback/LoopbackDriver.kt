@@ -68,6 +68,14 @@ class LoopbackDriver(
 
     override fun onPaused(paused: Boolean) = simulation.pause(paused)
 
+    override fun panelState(): Map<String, String> = mapOf(
+        "singleStepMode" to simulation.singleStepMode.toString(),
+        "waitingForStep" to (simulation.singleStepMode && !simulation.isBusy && pendingCommands.isNotEmpty()).toString(),
+        "timeFactor" to simulation.timeFactor.toString(),
+        "simulationPaused" to simulation.isPaused.toString(),
+        "loaded" to vehicle.loaded.toString(),
+    )
+
     private fun placeAtStart(known: Vehicle) {
         val name = vehicle.position ?: known.properties[LoopbackProperties.INITIAL_POSITION] ?: known.currentPosition
             ?: return placeUnpositioned(known)

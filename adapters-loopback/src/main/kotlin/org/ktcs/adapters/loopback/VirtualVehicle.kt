@@ -45,6 +45,7 @@ internal class VirtualVehicle(private val context: DriverContext) {
     }
 
     fun setLoaded(full: Boolean) {
+        if (full != loaded) context.publishEvent(LoopbackEvents.LOAD_CHANGED, mapOf("loaded" to full.toString()))
         loaded = full
         context.reportLoadHandlingDevices(listOf(LoadHandlingDevice(LOAD_HANDLING_DEVICE, full)))
     }
