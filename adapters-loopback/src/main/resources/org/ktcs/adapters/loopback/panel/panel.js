@@ -78,7 +78,7 @@ function build(ktcs, vehicle, container) {
     onchange: () => send(`${M}setSingleStepModeEnabled`, { value: String(singleStep.checked) }, 'Single-step mode') });
   const step = button('Step', 'step', () => send(`${M}triggerSingleStep`, {}, 'Step'), 'Carries out the next command');
   const queue = h('tbody', {});
-  const events = h('ol', { className: 'driver-events', 'data-role': 'driver-events' });
+  const events = h('ul', { className: 'driver-events', 'data-role': 'driver-events' });
 
   const ui = {
     place: (name) => send(`${M}setPosition`, { position: name }, `Place on ${name}`),
@@ -102,7 +102,8 @@ function build(ktcs, vehicle, container) {
       step.disabled = driverState.waitingForStep !== 'true';
       step.className = step.disabled ? '' : 'primary';
       if (document.activeElement !== timeFactor && driverState.timeFactor) timeFactor.value = Number(driverState.timeFactor);
-      queue.replaceChildren(...queueRows(view?.commandQueue ?? []).map((cells) => h('tr', {}, ...cells.map((c) => h('td', {}, c)))));
+      const rows = queueRows(view?.commandQueue ?? [], driverState.waitingForStep === 'true');
+      queue.replaceChildren(...rows.map((cells) => h('tr', {}, ...cells.map((c) => h('td', {}, c)))));
       if (queue.children.length === 0) queue.append(h('tr', {}, h('td', { colSpan: 3 }, 'no commands')));
     },
     showEvents(list) {
@@ -131,12 +132,16 @@ function build(ktcs, vehicle, container) {
   return ui;
 }
 
-/** The command queue's table rows: [stage, step, operation]; the first sent command is the one under way. */
-export function queueRows(commands) {
-  const label = { SENT: 'sent', WAITING_FOR_RESOURCES: 'waiting', QUEUED: 'queued' };
+/**
+ * The command queue's table rows: [stage, step, operation]. The first sent command is the one under way, or in
+ * single-step mode the one the next step carries out.
+ */
+export function queueRows(commands, waitingForStep = false) {
+  const label = { SENT: 'sent', WAITING_FOR_RESOURCES: 'waiting for resources', QUEUED: 'queued' };
+  const first = waitingForStep ? 'next step' : 'current';
   return commands.map((command, index) => [
-    index === 0 && command.stage === 'SENT' ? 'current' : (label[command.stage] ?? command.stage),
-    command.path ? `${command.path} → ${command.destinationPoint}` : command.destinationPoint,
+    index === 0 && command.stage === 'SENT' ? first : (label[command.stage] ?? command.stage),
+    command.path ?? command.destinationPoint,
     command.operation === 'NOP' ? '—' : `${command.operation}${command.location ? ` @ ${command.location}` : ''}`,
   ]);
 }
