@@ -52,6 +52,9 @@ internal class LoopbackMessageHandler(
         PUBLISH_EVENT to { p -> context.publishEvent(p.optional("type") ?: DEFAULT_EVENT_TYPE, p.all - "type") },
     )
 
+    /** The message types this handler carries out. */
+    val types: Set<String> get() = handlers.keys
+
     fun handle(message: DriverMessage) {
         val handler = handlers[message.type] ?: return log.debug("ignoring unknown message type {}", message.type)
         try {
