@@ -26,6 +26,9 @@ import org.ktcs.kernel.core.StepDriver
 import org.ktcs.kernel.extension.KtcsExtension
 import org.ktcs.kernel.web.WebApiClient
 import org.ktcs.kernel.web.WsTestClient
+import java.net.URI
+import java.net.http.HttpRequest
+import java.net.http.HttpResponse
 import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration.Companion.seconds
 
@@ -136,6 +139,17 @@ class DriverPanelWebTest : FunSpec({
         current["vehicle"]!!.jsonPrimitive.content shouldBe "Vehicle-02"
         current["type"]!!.jsonPrimitive.content shouldBe "test:got"
         current["payload"]!!.jsonObject["unit"]!!.jsonPrimitive.content shouldBe "Slow"
+
+        val sse = client.http.send(
+            HttpRequest.newBuilder(URI("$base/sse?/events/driverEvents=true")).build(),
+            HttpResponse.BodyHandlers.ofLines(),
+        )
+        command("Vehicle-02", speed("4")).statusCode() shouldBe 200
+        val frames = sse.body().iterator().asSequence().filter { it.startsWith("event: ") || it.startsWith("data: ") }
+            .take(2).toList()
+        frames[0] shouldBe "event: /events/driverEvents"
+        frames[1] shouldContain """"vehicle":"Vehicle-02","type":"test:got","payload":{"command":"setSpeed","value":"4"}"""
+        sse.body().close()
 
         val recent = Json.parseToJsonElement(client.call("GET", "$base/vehicles/Vehicle-02/driverEvents").body())
         recent.jsonArray.last().jsonObject["payload"]!!.jsonObject["command"]!!.jsonPrimitive.content shouldBe "setSpeed"
