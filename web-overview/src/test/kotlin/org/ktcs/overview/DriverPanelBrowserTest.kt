@@ -42,7 +42,9 @@ class DriverPanelBrowserTest : FunSpec({
     fun vehicle(name: String): JsonObject = Json.parseToJsonElement(ktcs!!.get("/v1/vehicles/$name").body()).jsonObject
 
     fun orderState(name: String): String =
-        Json.parseToJsonElement(ktcs!!.get("/v1/transportOrders/$name").body()).jsonObject["state"]!!.jsonPrimitive.content
+        Json.parseToJsonElement(
+            ktcs!!.get("/v1/transportOrders/$name").body(),
+        ).jsonObject["state"]!!.jsonPrimitive.content
 
     fun finishedCommands(vehicle: String, order: String): Int =
         Json.parseToJsonElement(ktcs!!.get("/v1/vehicles/$vehicle/driverEvents").body()).jsonArray
@@ -106,7 +108,8 @@ class DriverPanelBrowserTest : FunSpec({
 
     browserTest("energy and state set in the panel show in the vehicle's details") {
         // A vehicle that charges sets its own state when it is done: start from one that rests.
-        val full = """{"driver":"loopback","command":"tcs:virtualVehicle:setEnergyLevel","parameters":{"value":"100"}}"""
+        val full = """{"driver":"loopback","command":"tcs:virtualVehicle:setEnergyLevel",""" +
+            """"parameters":{"value":"100"}}"""
         ktcs!!.post("/v1/vehicles/Vehicle-04/driverCommand", full).statusCode() shouldBe 200
         eventually(30.seconds) {
             val resting = vehicle("Vehicle-04")

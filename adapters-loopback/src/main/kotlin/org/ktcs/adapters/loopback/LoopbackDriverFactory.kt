@@ -13,7 +13,9 @@ class LoopbackDriverFactory(private val settings: LoopbackSettings = LoopbackSet
 
     override val description: String = "Simulated vehicle (loopback)"
 
+    // snippet:driver-panel-factory
     override val panel: DriverPanel = LoopbackPanel.panel
+    // end-snippet
 
     override fun create(vehicleName: String, context: DriverContext): VehicleDriver =
         LoopbackDriver(vehicleName, context, settings, placement.takeIf { settings.placeUnpositionedVehicles })

@@ -29,7 +29,12 @@ object LoopbackEvents {
     /** Single-step mode was switched; payload `enabled`. */
     const val SINGLE_STEP_MODE_CHANGED: String = PREFIX + "singleStepModeChanged"
 
-    internal fun command(context: DriverContext, type: String, command: MovementCommand, extra: Map<String, String> = emptyMap()) {
+    internal fun command(
+        context: DriverContext,
+        type: String,
+        command: MovementCommand,
+        extra: Map<String, String> = emptyMap(),
+    ) {
         val payload = buildMap {
             put("order", command.transportOrder)
             put("point", command.step.destinationPoint)

@@ -24,6 +24,7 @@ import org.ktcs.api.model.VehicleState
  */
 internal object LoopbackPanel {
     private const val DIRECTORY = "org/ktcs/adapters/loopback/panel"
+    private val STATES = VehicleState.entries.map { it.name }
 
     val panel: DriverPanel = DriverPanel(
         title = "Loopback (simulated vehicle)",
@@ -41,6 +42,7 @@ internal object LoopbackPanel {
                 "Turns the vehicle",
                 listOf(DriverParameter("angle", ParameterType.NUMBER, "degrees", min = -360.0, max = 360.0)),
             ),
+            // snippet:driver-panel-commands
             DriverCommand(
                 SET_ENERGY_LEVEL,
                 "Sets the battery level",
@@ -49,8 +51,9 @@ internal object LoopbackPanel {
             DriverCommand(
                 SET_STATE,
                 "Sets the vehicle's state, e.g. ERROR or UNAVAILABLE to keep it from taking orders",
-                listOf(DriverParameter("value", ParameterType.CHOICE, "the state", values = VehicleState.entries.map { it.name })),
+                listOf(DriverParameter("value", ParameterType.CHOICE, "the state", values = STATES)),
             ),
+            // end-snippet
             DriverCommand(
                 SET_LOADED,
                 "Says whether the vehicle carries a load",
@@ -67,7 +70,10 @@ internal object LoopbackPanel {
                 "How many times faster than real time this vehicle moves and operates",
                 listOf(DriverParameter("value", ParameterType.NUMBER, "time factor", min = 0.01, max = 1000.0)),
             ),
-            DriverCommand(CURRENT_MOVEMENT_COMMAND_FAILED, "Reports the current command failed (its order is withdrawn)"),
+            DriverCommand(
+                CURRENT_MOVEMENT_COMMAND_FAILED,
+                "Reports the current command failed (its order is withdrawn)",
+            ),
             DriverCommand(
                 PUBLISH_EVENT,
                 "Publishes a driver event, as a real vehicle would",

@@ -46,8 +46,8 @@ internal class Simulation(
 
     val isPaused: Boolean get() = paused
 
-    /** Whether the vehicle is carrying out a command right now (driving or operating). */
-    val isBusy: Boolean get() = activity != null
+    /** In single-step mode: whether a command waits for the next step. */
+    fun isWaitingForStep(): Boolean = singleStepMode && activity == null && queue.pending.isNotEmpty()
 
     /** Simulated time runs [factor] times faster from now on; what the vehicle is doing carries on at the new pace. */
     fun setTimeFactor(factor: Double) {
@@ -203,7 +203,12 @@ internal class Simulation(
         vehicle.changeState(VehicleState.ERROR)
         val where = driving.command.step.path ?: driving.command.step.destinationPoint
         notify("battery empty after ${driving.driven.roundToLong()} mm on $where; stopped until it gets energy")
-        LoopbackEvents.command(context, LoopbackEvents.COMMAND_FAILED, driving.command, mapOf("reason" to "battery empty"))
+        LoopbackEvents.command(
+            context,
+            LoopbackEvents.COMMAND_FAILED,
+            driving.command,
+            mapOf("reason" to "battery empty"),
+        )
         queue.failed(driving.command)
     }
 

@@ -14,7 +14,11 @@ class LoopbackPanelTest : FunSpec({
 
     test("every command the panel declares is one the vehicle carries out, and its files are on the class path") {
         val harness = Harness()
-        val handled = LoopbackMessageHandler(harness.context, VirtualVehicle(harness.context), simulationOf(harness)).types
+        val handled = LoopbackMessageHandler(
+            harness.context,
+            VirtualVehicle(harness.context),
+            simulationOf(harness),
+        ).types
         handled shouldContainAll LoopbackPanel.panel.commands.map { it.name }
         val panel = LoopbackDriverFactory().panel
         panel.classLoader.getResource("${panel.resourceDirectory}/${panel.entryModule}") shouldNotBe null

@@ -49,7 +49,9 @@ public data class DriverCommand(
     init {
         require(name.isNotBlank()) { "a driver command needs a name" }
         val duplicates = parameters.groupBy { it.name }.filterValues { it.size > 1 }.keys
-        require(duplicates.isEmpty()) { "driver command '$name' declares parameters twice: ${duplicates.joinToString()}" }
+        require(duplicates.isEmpty()) {
+            "driver command '$name' declares parameters twice: ${duplicates.joinToString()}"
+        }
     }
 }
 

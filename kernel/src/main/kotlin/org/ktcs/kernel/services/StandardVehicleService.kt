@@ -2,8 +2,8 @@ package org.ktcs.kernel.services
 
 import org.ktcs.api.driver.DriverMessage
 import org.ktcs.api.driver.DriverPanelView
-import org.ktcs.api.event.DriverEvent
 import org.ktcs.api.error.InvalidRequestException
+import org.ktcs.api.event.DriverEvent
 import org.ktcs.api.model.AcceptableOrderType
 import org.ktcs.api.model.EnergyLevelThresholdSet
 import org.ktcs.api.model.IntegrationLevel

@@ -21,7 +21,9 @@ internal object DriverCommandCheck {
         plant: PlantModel,
     ): Map<String, String> {
         val command = panel.command(name) ?: throw InvalidRequestException(
-            "driver '$driver' has no command '$name'; it has: ${panel.commands.joinToString { it.name }.ifEmpty { "none" }}",
+            "driver '$driver' has no command '$name'; it has: ${panel.commands.joinToString {
+                it.name
+            }.ifEmpty { "none" }}",
         )
         val unknown = parameters.keys - command.parameters.map { it.name }.toSet()
         if (unknown.isNotEmpty()) {
@@ -31,9 +33,11 @@ internal object DriverCommandCheck {
             val raw = parameters[parameter.name]?.trim()
             when {
                 raw != null -> parameter.name to checked(command, parameter, raw, plant)
+
                 parameter.required -> throw InvalidRequestException(
                     "command '$name' needs parameter '${parameter.name}' (${describe(parameter)})",
                 )
+
                 else -> null
             }
         }.toMap()
@@ -45,11 +49,17 @@ internal object DriverCommandCheck {
         )
         return when (parameter.type) {
             ParameterType.TEXT -> raw
-            ParameterType.INTEGER -> raw.toLongOrNull()?.takeIf { inRange(parameter, it.toDouble()) }?.toString() ?: bad()
+
+            ParameterType.INTEGER -> raw.toLongOrNull()?.takeIf { inRange(parameter, it.toDouble()) }?.toString()
+                ?: bad()
+
             ParameterType.NUMBER -> raw.toDoubleOrNull()?.takeIf { it.isFinite() && inRange(parameter, it) }
                 ?.let { raw } ?: bad()
+
             ParameterType.BOOLEAN -> raw.lowercase().toBooleanStrictOrNull()?.toString() ?: bad()
+
             ParameterType.CHOICE -> parameter.values.firstOrNull { it.equals(raw, ignoreCase = true) } ?: bad()
+
             ParameterType.POINT -> plant.point(raw)?.name ?: bad()
         }
     }

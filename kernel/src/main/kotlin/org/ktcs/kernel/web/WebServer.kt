@@ -31,8 +31,8 @@ import org.ktcs.kernel.web.plugins.CrossSiteGuard
 import org.ktcs.kernel.web.plugins.RequestSizeLimit
 import org.ktcs.kernel.web.plugins.installErrorResponses
 import org.ktcs.kernel.web.v1.V1Json
-import org.ktcs.kernel.web.v1.events.StatusEventBuffer
 import org.ktcs.kernel.web.v1.drivers.driverPanelRoutes
+import org.ktcs.kernel.web.v1.events.StatusEventBuffer
 import org.ktcs.kernel.web.v1.events.eventRoutes
 import org.ktcs.kernel.web.v1.orders.orderSequenceRoutes
 import org.ktcs.kernel.web.v1.orders.transportOrderRoutes

@@ -59,7 +59,12 @@ data class PostDriverCommandRequest(
 
 /** A driver event as the web API, the WebSocket topic `driverEvents` and the SSE stream carry it. */
 @Serializable
-data class DriverEventDto(val vehicle: String, val type: String, val payload: Map<String, String>, val timestamp: String)
+data class DriverEventDto(
+    val vehicle: String,
+    val type: String,
+    val payload: Map<String, String>,
+    val timestamp: String,
+)
 
 fun DriverPanelView.toDto() = DriverPanelDto(
     vehicle = vehicle,

@@ -91,7 +91,9 @@ class DriverPanelWebTest : FunSpec({
         response.statusCode() shouldBe 200
         val panel = Json.parseToJsonElement(response.body()).jsonObject
         panel["driver"]!!.jsonPrimitive.content shouldBe "panel-step"
-        panel["panel"]!!.jsonObject["commands"]!!.jsonArray.map { it.jsonObject["name"]!!.jsonPrimitive.content } shouldBe
+        panel["panel"]!!.jsonObject["commands"]!!.jsonArray.map {
+            it.jsonObject["name"]!!.jsonPrimitive.content
+        } shouldBe
             listOf("setSpeed", "goTo")
         panel["state"]!!.jsonObject.keys shouldBe setOf("received")
         client.call("GET", "$base/vehicles/Ghost/driverPanel").statusCode() shouldBe 404
@@ -148,11 +150,13 @@ class DriverPanelWebTest : FunSpec({
         val frames = sse.body().iterator().asSequence().filter { it.startsWith("event: ") || it.startsWith("data: ") }
             .take(2).toList()
         frames[0] shouldBe "event: /events/driverEvents"
-        frames[1] shouldContain """"vehicle":"Vehicle-02","type":"test:got","payload":{"command":"setSpeed","value":"4"}"""
+        frames[1] shouldContain
+            """"vehicle":"Vehicle-02","type":"test:got","payload":{"command":"setSpeed","value":"4"}"""
         sse.body().close()
 
         val recent = Json.parseToJsonElement(client.call("GET", "$base/vehicles/Vehicle-02/driverEvents").body())
-        recent.jsonArray.last().jsonObject["payload"]!!.jsonObject["command"]!!.jsonPrimitive.content shouldBe "setSpeed"
+        recent.jsonArray.last().jsonObject["payload"]!!.jsonObject["command"]!!.jsonPrimitive.content shouldBe
+            "setSpeed"
         socket.close()
     }
 })
