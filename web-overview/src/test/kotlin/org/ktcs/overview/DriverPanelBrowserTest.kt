@@ -21,33 +21,26 @@ import kotlin.time.Duration.Companion.seconds
  * serve every test, in order; every test fails on any console or page error.
  */
 class DriverPanelBrowserTest : FunSpec({
-    var ktcs: RunningKtcs? = null
-    var session: Chromium.Session? = null
-    lateinit var watched: Chromium.WatchedPage
-    val page: () -> Page = { watched.page }
+    val overview = OverviewSession()
+    val page: () -> Page = { overview.page }
 
     fun browserTest(name: String, body: suspend () -> Unit) = test(name) {
-        Chromium.assumeAvailable()
-        if (session == null) {
-            ktcs = RunningKtcs()
-            session = Chromium.start()
-            watched = session!!.newPage()
-            watched.page.navigate(ktcs!!.baseUrl + "/")
-            watched.page.waitForFunction("() => window.ktcsOverview && window.ktcsOverview.connected()")
-        }
+        overview.open()
         body()
-        watched.errors.shouldBeEmpty()
+        overview.watched.errors.shouldBeEmpty()
     }
 
-    fun vehicle(name: String): JsonObject = Json.parseToJsonElement(ktcs!!.get("/v1/vehicles/$name").body()).jsonObject
+    fun vehicle(name: String): JsonObject = Json.parseToJsonElement(
+        overview.ktcs.get("/v1/vehicles/$name").body(),
+    ).jsonObject
 
     fun orderState(name: String): String =
         Json.parseToJsonElement(
-            ktcs!!.get("/v1/transportOrders/$name").body(),
+            overview.ktcs.get("/v1/transportOrders/$name").body(),
         ).jsonObject["state"]!!.jsonPrimitive.content
 
     fun finishedCommands(vehicle: String, order: String): Int =
-        Json.parseToJsonElement(ktcs!!.get("/v1/vehicles/$vehicle/driverEvents").body()).jsonArray
+        Json.parseToJsonElement(overview.ktcs.get("/v1/vehicles/$vehicle/driverEvents").body()).jsonArray
             .map { it.jsonObject }
             .count {
                 it["type"]!!.jsonPrimitive.content == "loopback:commandFinished" &&
@@ -71,15 +64,14 @@ class DriverPanelBrowserTest : FunSpec({
 
     fun fact(label: String): Locator = page().locator("#details .details-info tr:has(th:text-is('$label')) td")
 
-    fun postOrder(name: String, vehicle: String) = ktcs!!.post(
+    fun postOrder(name: String, vehicle: String) = overview.ktcs.post(
         "/v1/transportOrders/$name",
         """{"intendedVehicle":"$vehicle","destinations":[{"locationName":"Storage 01","operation":"Load cargo"},
            {"locationName":"Goods out 01","operation":"Unload cargo"}]}""",
     ).statusCode() shouldBe 200
 
     afterSpec {
-        session?.close()
-        ktcs?.close()
+        overview.close()
     }
 
     browserTest("a vehicle dragged onto a point is placed there, then runs an order to FINISHED") {
@@ -92,7 +84,7 @@ class DriverPanelBrowserTest : FunSpec({
         page().mouse().move(fromX, fromY)
         page().mouse().down()
         page().mouse().move(toX, toY, com.microsoft.playwright.Mouse.MoveOptions().setSteps(12))
-        watched.screenshot("driver-panel-dragging")
+        overview.watched.screenshot("driver-panel-dragging")
         page().mouse().up()
         assertThat(page().locator("#toasts")).containsText("Place on $target (Vehicle-01): done")
         eventually(10.seconds) { vehicle("Vehicle-01")["currentPosition"]!!.jsonPrimitive.content shouldBe target }
@@ -110,7 +102,7 @@ class DriverPanelBrowserTest : FunSpec({
         // A vehicle that charges sets its own state when it is done: start from one that rests.
         val full = """{"driver":"loopback","command":"tcs:virtualVehicle:setEnergyLevel",""" +
             """"parameters":{"value":"100"}}"""
-        ktcs!!.post("/v1/vehicles/Vehicle-04/driverCommand", full).statusCode() shouldBe 200
+        overview.ktcs.post("/v1/vehicles/Vehicle-04/driverCommand", full).statusCode() shouldBe 200
         eventually(30.seconds) {
             val resting = vehicle("Vehicle-04")
             resting["state"]!!.jsonPrimitive.content to resting["procState"]!!.jsonPrimitive.content shouldBe
@@ -126,7 +118,7 @@ class DriverPanelBrowserTest : FunSpec({
         for (width in listOf(1920, 1440, 1024, 390)) {
             page().setViewportSize(width, if (width == 390) 844 else 900)
             panel.scrollIntoViewIfNeeded()
-            watched.screenshot("driver-panel-$width")
+            overview.watched.screenshot("driver-panel-$width")
         }
         page().setViewportSize(1440, 860)
         // A bad value is refused by the kernel with a message that names it; nothing changes.
@@ -134,7 +126,7 @@ class DriverPanelBrowserTest : FunSpec({
         panel.locator("[data-action=set-energy]").click()
         assertThat(page().locator("#toasts")).containsText("must be a whole number from 0 to 100, was '140'")
         // The browser logs the refused request as a console error; that one is expected.
-        watched.errors.removeIf { it.contains("status of 400") }
+        overview.watched.errors.removeIf { it.contains("status of 400") }
         assertThat(fact("Energy")).hasText("37%")
         vehicle("Vehicle-04")["energyLevel"]!!.jsonPrimitive.content.toInt() shouldBe 37
         panel.locator("[data-field=state]").selectOption("IDLE")
@@ -159,7 +151,10 @@ class DriverPanelBrowserTest : FunSpec({
         Thread.sleep(1_500)
         finishedCommands("Vehicle-02", "Stepped-1") shouldBe 2
         orderState("Stepped-1") shouldBe "BEING_PROCESSED"
-        watched.screenshot("driver-panel-single-step")
+        // For the README: the panel without the action messages over the plant.
+        page().evaluate("() => document.getElementById('toasts').style.visibility = 'hidden'")
+        overview.watched.screenshot("driver-panel-single-step")
+        page().evaluate("() => document.getElementById('toasts').style.visibility = ''")
         panel.locator("[data-field=single-step]").uncheck()
         eventually(30.seconds) { orderState("Stepped-1") shouldBe "FINISHED" }
         page().locator("#details .close").click()
