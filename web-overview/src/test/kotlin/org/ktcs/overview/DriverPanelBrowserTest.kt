@@ -24,11 +24,7 @@ class DriverPanelBrowserTest : FunSpec({
     val overview = OverviewSession()
     val page: () -> Page = { overview.page }
 
-    fun browserTest(name: String, body: suspend () -> Unit) = test(name) {
-        overview.open()
-        body()
-        overview.watched.errors.shouldBeEmpty()
-    }
+    fun browserTest(name: String, body: suspend () -> Unit) = overview.test(this, name, body)
 
     fun vehicle(name: String): JsonObject = Json.parseToJsonElement(
         overview.ktcs.get("/v1/vehicles/$name").body(),

@@ -38,11 +38,7 @@ class OverviewBrowserTest : FunSpec({
     val overview = OverviewSession()
     val page: () -> Page = { overview.page }
 
-    fun browserTest(name: String, body: suspend () -> Unit) = test(name) {
-        overview.open()
-        body()
-        overview.watched.errors.shouldBeEmpty()
-    }
+    fun browserTest(name: String, body: suspend () -> Unit) = overview.test(this, name, body)
 
     fun model(): JsonObject = Json.parseToJsonElement(overview.ktcs.get("/v1/plantModel").body()).jsonObject
 

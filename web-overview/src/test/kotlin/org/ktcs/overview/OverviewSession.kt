@@ -1,6 +1,8 @@
 package org.ktcs.overview
 
 import com.microsoft.playwright.Page
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldBeEmpty
 
 /**
  * The real application and one headless Chromium page on its overview, shared by the tests of one spec, in order:
@@ -24,6 +26,13 @@ class OverviewSession {
         watched = session!!.newPage()
         page.navigate(ktcs.baseUrl + "/")
         page.waitForFunction("() => window.ktcsOverview && window.ktcsOverview.connected()")
+    }
+
+    /** A test of [spec] that opens the overview first and fails on any console or page error. */
+    fun test(spec: FunSpec, name: String, body: suspend () -> Unit) = spec.test(name) {
+        open()
+        body()
+        watched.errors.shouldBeEmpty()
     }
 
     fun close() {
