@@ -61,7 +61,7 @@ function build(ktcs, vehicle, container) {
 
   const point = h('select', { 'aria-label': 'Point', 'data-field': 'position' },
     h('option', { value: '' }, 'choose a point…'), ...points.map((name) => h('option', { value: name }, name)));
-  const angle = h('input', { type: 'number', min: -360, max: 360, step: 'any', size: 5, placeholder: 'unknown', 'aria-label': 'Orientation (degrees)', 'data-field': 'orientation' });
+  const angle = h('input', { type: 'number', min: -360, max: 360, step: 'any', size: 5, placeholder: '—', title: 'unknown until set', 'aria-label': 'Orientation (degrees)', 'data-field': 'orientation' });
   const energy = h('input', { type: 'number', min: 0, max: 100, step: 1, size: 4, 'aria-label': 'Energy (%)', 'data-field': 'energy' });
   const state = h('select', { 'aria-label': 'Vehicle state', 'data-field': 'state' }, ...states.map((s) => h('option', { value: s }, s)));
   const timeFactor = h('input', { type: 'number', min: 0.01, max: 1000, step: 'any', size: 5, 'aria-label': 'Time factor', 'data-field': 'time-factor' });
