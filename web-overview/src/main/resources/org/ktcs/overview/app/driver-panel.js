@@ -5,9 +5,13 @@
 import { el } from './dom.js';
 import { act, enc } from './actions.js';
 
+// Whether the operator keeps driver panels open; folding one folds them for the next vehicle too.
+let open = true;
+
 /** The section for vehicle name; close() unmounts the panel when the details show something else. */
 export function driverPanel(ktcs, plant, name) {
-  const element = el('section', { className: 'driver-panel', hidden: true, 'data-role': 'driver-panel' });
+  const element = el('details', { className: 'driver-panel', hidden: true, open, 'data-role': 'driver-panel' });
+  element.addEventListener('toggle', () => { open = element.open; });
   const path = `/vehicles/${enc(name)}`;
   let closed = false;
   let unmount = null;
@@ -16,7 +20,7 @@ export function driverPanel(ktcs, plant, name) {
     const module = await import(`/overview/drivers/${enc(view.driver)}/${view.panel.module}`);
     if (closed) return;
     const body = el('div', { className: 'driver-panel-body' });
-    element.append(el('h3', {}, view.panel.title), body);
+    element.append(el('summary', {}, view.panel.title), body);
     element.hidden = false;
     unmount = module.default.mount(body, ktcs, vehicleHandle(ktcs, plant, name, path, view), view) ?? null;
   };
