@@ -22,6 +22,9 @@ class RecentDriverEvents(private val perVehicle: Int = DEFAULT_PER_VEHICLE) {
         byVehicle[vehicle]?.toList().orEmpty()
     }
 
+    /** Forgets every event, when the plant model is replaced: the old vehicles are gone. */
+    fun clear() = byVehicle.clear()
+
     companion object {
         const val DEFAULT_PER_VEHICLE = 50
     }

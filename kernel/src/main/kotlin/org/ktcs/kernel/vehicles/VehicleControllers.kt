@@ -70,6 +70,7 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
         contexts.values.forEach(ControllerDriverContext::retire)
         controllers.clear()
         contexts.clear()
+        recentEvents.clear()
     }
 
     fun attachment(vehicle: String): DriverAttachment {
