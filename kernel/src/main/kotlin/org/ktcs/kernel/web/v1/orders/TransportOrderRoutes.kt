@@ -13,6 +13,7 @@ import io.ktor.server.routing.route
 import org.ktcs.api.error.ObjectUnknownException
 import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.web.v1.booleanQuery
+import org.ktcs.kernel.web.v1.dispatcherTrigger
 import org.ktcs.kernel.web.v1.pathName
 import org.ktcs.kernel.web.v1.receiveJson
 
@@ -28,10 +29,7 @@ fun Route.transportOrderRoutes(services: KernelServices, json: TransportOrderJso
         val orders = services.transportOrders.transportOrders(vehicle)
         call.respondBytes(json.list(orders, wholePool = vehicle == null), JSON_UTF8)
     }
-    post("/dispatcher/trigger") {
-        services.dispatcher.dispatch()
-        call.respond(HttpStatusCode.OK)
-    }
+    dispatcherTrigger(services)
     route("/{NAME}") {
         get {
             val name = call.pathName()
