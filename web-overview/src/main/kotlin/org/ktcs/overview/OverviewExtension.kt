@@ -5,6 +5,7 @@ import org.koin.dsl.module
 import org.ktcs.api.overview.OverviewContribution
 import org.ktcs.kernel.config.KtcsConfig
 import org.ktcs.kernel.config.KtcsSettings
+import org.ktcs.kernel.core.KernelCore
 import org.ktcs.kernel.extension.KtcsExtension
 import org.ktcs.kernel.web.WebContribution
 
@@ -27,6 +28,7 @@ class OverviewExtension : KtcsExtension {
                 contributions,
                 ThemeSelection.from(config, contributions),
                 accessKeyRequired = config[KtcsSettings.webAccessKey].isNotEmpty(),
+                driverPanel = { driver -> getOrNull<KernelCore>()?.controllers?.factory(driver)?.panel },
             )
         }
     }

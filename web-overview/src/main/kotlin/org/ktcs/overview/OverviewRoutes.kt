@@ -14,17 +14,20 @@ import io.ktor.server.routing.route
 import kotlinx.serialization.Serializable
 import kotlinx.serialization.builtins.ListSerializer
 import kotlinx.serialization.json.Json
+import org.ktcs.api.driver.DriverPanel
 import org.ktcs.kernel.web.WebContribution
 
 /**
  * The overview's routes: the page at `/`, its own files at `/overview/app/`, the list of panels and themes at
- * `/overview/extensions.json`, their files at `/overview/extensions/{name}/`, and what the page must know about
+ * `/overview/extensions.json`, their files at `/overview/extensions/{name}/`, the files of each driver's panel at
+ * `/overview/drivers/{driver}/`, and what the page must know about
  * the configuration at `/overview/settings.json`. None of this is secret; the web API behind it keeps its access key.
  */
 class OverviewRoutes(
     private val contributions: Contributions,
     private val themes: ThemeSelection,
     private val accessKeyRequired: Boolean,
+    private val driverPanel: (driver: String) -> DriverPanel? = { null },
 ) : WebContribution {
     private val json = Json { encodeDefaults = true }
     private val app = ClassPathFiles(OverviewRoutes::class.java.classLoader, APP_DIRECTORY)
@@ -46,6 +49,14 @@ class OverviewRoutes(
                     json.encodeToString(OverviewSettings.serializer(), settings),
                     ContentType.Application.Json,
                 )
+            }
+            get("/drivers/{driver}/{path...}") {
+                val panel = driverPanel(call.parameters["driver"].orEmpty())
+                if (panel == null) {
+                    call.respond(HttpStatusCode.NotFound)
+                } else {
+                    call.respondFile(ClassPathFiles(panel.classLoader, panel.resourceDirectory), call.tail())
+                }
             }
             get("/extensions/{name}/{path...}") {
                 val contribution = contributions[call.parameters["name"].orEmpty()]

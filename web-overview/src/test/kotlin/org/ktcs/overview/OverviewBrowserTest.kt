@@ -35,25 +35,12 @@ private fun encode(name: String): String = URLEncoder.encode(name, Charsets.UTF_
  * application and one page serve every test, in order; every test fails on any console or page error.
  */
 class OverviewBrowserTest : FunSpec({
-    var ktcs: RunningKtcs? = null
-    var session: Chromium.Session? = null
-    lateinit var watched: Chromium.WatchedPage
-    val page: () -> Page = { watched.page }
+    val overview = OverviewSession()
+    val page: () -> Page = { overview.page }
 
-    fun browserTest(name: String, body: suspend () -> Unit) = test(name) {
-        Chromium.assumeAvailable()
-        if (session == null) {
-            ktcs = RunningKtcs()
-            session = Chromium.start()
-            watched = session!!.newPage()
-            watched.page.navigate(ktcs!!.baseUrl + "/")
-            watched.page.waitForFunction("() => window.ktcsOverview && window.ktcsOverview.connected()")
-        }
-        body()
-        watched.errors.shouldBeEmpty()
-    }
+    fun browserTest(name: String, body: suspend () -> Unit) = overview.test(this, name, body)
 
-    fun model(): JsonObject = Json.parseToJsonElement(ktcs!!.get("/v1/plantModel").body()).jsonObject
+    fun model(): JsonObject = Json.parseToJsonElement(overview.ktcs.get("/v1/plantModel").body()).jsonObject
 
     fun drawn(): Map<*, *> = page().evaluate("() => window.ktcsOverview.drawn()") as Map<*, *>
 
@@ -70,7 +57,7 @@ class OverviewBrowserTest : FunSpec({
         (page().evaluate("() => window.ktcsOverview.$what()") as List<*>).map { it as String }
 
     /** Every resource a vehicle holds (allocated or claimed), as the kernel tells it. */
-    fun heldByVehicles(): List<String> = Json.parseToJsonElement(ktcs!!.get("/v1/vehicles").body()).jsonArray
+    fun heldByVehicles(): List<String> = Json.parseToJsonElement(overview.ktcs.get("/v1/vehicles").body()).jsonArray
         .flatMap { vehicle ->
             listOf("allocatedResources", "claimedResources").flatMap { key ->
                 vehicle.jsonObject[key]!!.jsonArray.flatMap { set -> set.jsonArray.map { it.jsonPrimitive.content } }
@@ -79,17 +66,16 @@ class OverviewBrowserTest : FunSpec({
 
     suspend fun withdrawOpenOrders() {
         val open = {
-            Json.parseToJsonElement(ktcs!!.get("/v1/transportOrders").body()).jsonArray.map { it.jsonObject }
+            Json.parseToJsonElement(overview.ktcs.get("/v1/transportOrders").body()).jsonArray.map { it.jsonObject }
                 .filter { it["state"]!!.jsonPrimitive.content !in FINAL_STATES }
                 .map { it["name"]!!.jsonPrimitive.content }
         }
-        open().forEach { ktcs!!.post("/v1/transportOrders/${encode(it)}/withdrawal?immediate=true", "") }
+        open().forEach { overview.ktcs.post("/v1/transportOrders/${encode(it)}/withdrawal?immediate=true", "") }
         eventually(20.seconds) { open().shouldBeEmpty() }
     }
 
     afterSpec {
-        session?.close()
-        ktcs?.close()
+        overview.close()
     }
 
     browserTest("the plant shows as many points, paths and locations as the model has; layers hide them") {
@@ -103,7 +89,7 @@ class OverviewBrowserTest : FunSpec({
         assertThat(page().locator("#connection")).hasText("live")
         (page().evaluate("() => window.ktcsOverview.vehicleStyle('Vehicle-01')") as Map<*, *>)["label"] shouldBe
             "Vehicle-01"
-        watched.screenshot("plant")
+        overview.watched.screenshot("plant")
         page().locator("[data-layer='0']").uncheck()
         page().waitForFunction("() => window.ktcsOverview.drawn().points === 0")
         page().locator("[data-layer='0']").check()
@@ -111,7 +97,7 @@ class OverviewBrowserTest : FunSpec({
     }
 
     browserTest("a vehicle's drawn position changes while it drives") {
-        val created = ktcs!!.post(
+        val created = overview.ktcs.post(
             "/v1/transportOrders/Drive-1",
             """{"intendedVehicle":"Vehicle-01","destinations":[{"locationName":"Storage 01","operation":"Load cargo"},
                {"locationName":"Goods out 01","operation":"Unload cargo"}]}""",
@@ -136,7 +122,7 @@ class OverviewBrowserTest : FunSpec({
             ),
         ).hasCount(1)
         assertThat(page().locator("#details")).not().containsText("[object")
-        watched.screenshot("vehicle-details")
+        overview.watched.screenshot("vehicle-details")
     }
 
     browserTest("an order created in the dialog reaches FINISHED in the order table") {
@@ -149,13 +135,13 @@ class OverviewBrowserTest : FunSpec({
         dialog.locator("[name=destination]").nth(1).selectOption("location:Goods out 01")
         dialog.locator("[name=operation]").nth(1).selectOption("Unload cargo")
         dialog.locator("[name=name]").fill("Browser-Order-1")
-        watched.screenshot("order-dialog")
+        overview.watched.screenshot("order-dialog")
         dialog.locator("[data-action=create-order]").click()
         val state = page().locator("[data-order='Browser-Order-1'] [data-column=state]")
         assertThat(state).hasText("FINISHED", LocatorAssertions.HasTextOptions().setTimeout(60_000.0))
         page().locator("[data-order='Browser-Order-1']").click()
         assertThat(page().locator("#details h2")).hasText("Order Browser-Order-1")
-        watched.screenshot("orders")
+        overview.watched.screenshot("orders")
     }
 
     browserTest("a path locked in the page is locked in the kernel") {
@@ -169,7 +155,7 @@ class OverviewBrowserTest : FunSpec({
         assertThat(page().locator("#toasts")).containsText("Lock path $name: done")
         val locked = { model()["paths"]!!.jsonArray.first { it.jsonObject["name"]!!.jsonPrimitive.content == name } }
         locked().jsonObject["locked"]!!.jsonPrimitive.boolean shouldBe true
-        watched.screenshot("path-locked")
+        overview.watched.screenshot("path-locked")
         page().locator("#details [data-action=unlock]").click()
         assertThat(page().locator("#toasts")).containsText("Unlock path $name: done")
         locked().jsonObject["locked"]!!.jsonPrimitive.boolean shouldBe false
@@ -181,8 +167,8 @@ class OverviewBrowserTest : FunSpec({
     ) {
         val vehicle = "Vehicle-03"
         val loaded = """{"type":"tcs:virtualVehicle:setLoaded","parameters":[{"key":"value","value":"true"}]}"""
-        ktcs!!.post("/v1/vehicles/$vehicle/commAdapter/message", loaded).statusCode() shouldBe 200
-        ktcs!!.post(
+        overview.ktcs.post("/v1/vehicles/$vehicle/commAdapter/message", loaded).statusCode() shouldBe 200
+        overview.ktcs.post(
             "/v1/transportOrders/Loaded-1",
             """{"intendedVehicle":"$vehicle","destinations":[{"locationName":"Storage 01","operation":"Load cargo"},
                {"locationName":"Goods out 01","operation":"Unload cargo"}]}""",
@@ -196,20 +182,20 @@ class OverviewBrowserTest : FunSpec({
         val loopback = page().locator("#details [data-role=loopback]")
         assertThat(loopback.locator("[data-role=load-state]")).hasText("carries a load")
         val orderState = {
-            Json.parseToJsonElement(ktcs!!.get("/v1/transportOrders/Loaded-1").body()).jsonObject["state"]!!
+            Json.parseToJsonElement(overview.ktcs.get("/v1/transportOrders/Loaded-1").body()).jsonObject["state"]!!
                 .jsonPrimitive.content
         }
         orderState() shouldBe "DISPATCHABLE"
         loopback.scrollIntoViewIfNeeded()
-        watched.screenshot("vehicle-loaded")
+        overview.watched.screenshot("vehicle-loaded")
         page().setViewportSize(390, 844)
         loopback.scrollIntoViewIfNeeded()
-        watched.screenshot("vehicle-loaded-phone")
+        overview.watched.screenshot("vehicle-loaded-phone")
         page().setViewportSize(1440, 860)
 
         loopback.locator("[data-action=reset-load]").click()
         assertThat(page().locator("#toasts")).containsText("Reset load ($vehicle): done")
-        watched.screenshot("vehicle-load-reset")
+        overview.watched.screenshot("vehicle-load-reset")
         eventually(20.seconds) { orderState() shouldBeIn setOf("BEING_PROCESSED", "FINISHED") }
         page().locator("#details .close").click()
     }
@@ -226,7 +212,7 @@ class OverviewBrowserTest : FunSpec({
                 Pattern.compile("Running · created [1-9]"),
                 LocatorAssertions.HasTextOptions().setTimeout(10_000.0),
             )
-        watched.screenshot("panel-load-generator")
+        overview.watched.screenshot("panel-load-generator")
         panel.locator("[data-role=toggle]").click()
         assertThat(panel.locator("[data-role=status]")).containsText("Stopped")
         assertThat(panel.locator("[data-role=error]")).isEmpty()
@@ -237,7 +223,7 @@ class OverviewBrowserTest : FunSpec({
         val panel = page().locator("[data-panel=statistics]")
         assertThat(panel.locator("[data-role=totals]")).hasText(Pattern.compile("Finished: [1-9]"))
         // Park orders replaced by real work end FAILED, but are no failed work: only non-dispensable orders count.
-        val failedWork = Json.parseToJsonElement(ktcs!!.get("/v1/transportOrders").body()).jsonArray
+        val failedWork = Json.parseToJsonElement(overview.ktcs.get("/v1/transportOrders").body()).jsonArray
             .map { it.jsonObject }
             .count { order ->
                 !order["dispensable"]!!.jsonPrimitive.boolean &&
@@ -249,7 +235,7 @@ class OverviewBrowserTest : FunSpec({
         // A vehicle's row appears only once its time has been counted (the legend is always drawn).
         assertThat(panel.locator("[data-role=activity]"))
             .containsText("Vehicle-01", LocatorAssertions.ContainsTextOptions().setTimeout(10_000.0))
-        watched.screenshot("panel-statistics")
+        overview.watched.screenshot("panel-statistics")
     }
 
     browserTest("the resource allocation panel lists what each vehicle holds") {
@@ -260,7 +246,7 @@ class OverviewBrowserTest : FunSpec({
         assertThat(panel.locator("[data-role=resources] tbody")).containsText("Point-")
         val cells = panel.locator("td").allTextContents().map { cell -> cell.split(", ") }
         cells.filter { it.size != it.toSet().size } shouldBe emptyList()
-        watched.screenshot("panel-resources")
+        overview.watched.screenshot("panel-resources")
     }
 
     browserTest("after the WebSocket drops, the page resynchronises and the load generator keeps running") {
@@ -281,7 +267,7 @@ class OverviewBrowserTest : FunSpec({
         page().evaluate("() => window.ktcsOverview.dropConnection(2000)")
         page().waitForFunction("() => !window.ktcsOverview.connected()")
         // Changed while the page hears nothing: only the snapshots after reconnecting can tell it.
-        ktcs!!.put("/v1/paths/${encode(path)}/locked?newValue=true").statusCode() shouldBe 200
+        overview.ktcs.put("/v1/paths/${encode(path)}/locked?newValue=true").statusCode() shouldBe 200
         page().waitForFunction(
             "() => window.ktcsOverview.connected()",
             null,
@@ -301,7 +287,7 @@ class OverviewBrowserTest : FunSpec({
         assertThat(generator.locator("[data-role=error]")).isEmpty()
         generator.locator("[data-role=toggle]").click()
         assertThat(generator.locator("[data-role=status]")).containsText("Stopped")
-        ktcs!!.put("/v1/paths/${encode(path)}/locked?newValue=false").statusCode() shouldBe 200
+        overview.ktcs.put("/v1/paths/${encode(path)}/locked?newValue=false").statusCode() shouldBe 200
         assertThat(lockedFact).hasText("no")
     }
 
@@ -314,7 +300,7 @@ class OverviewBrowserTest : FunSpec({
         assertThat(page().locator("#details h2")).hasText("Order Browser-Order-1")
         drawnNames("highlightedRoute").shouldNotBeEmpty()
         val replacement = JsonObject(model() + ("name" to JsonPrimitive("Replaced demo")))
-        ktcs!!.put("/v1/plantModel", replacement.toString()).statusCode() shouldBe 200
+        overview.ktcs.put("/v1/plantModel", replacement.toString()).statusCode() shouldBe 200
         assertThat(page().locator("#toasts")).containsText("Plant model replaced: Replaced demo")
         assertThat(page().locator("#model-name")).hasText("Replaced demo")
         assertThat(page().locator("#details")).isHidden()
@@ -327,6 +313,6 @@ class OverviewBrowserTest : FunSpec({
             drawnNames("drawnResources") shouldBe held
         }
         drawnNames("drawnRoutes").shouldBeEmpty()
-        watched.screenshot("model-replaced")
+        overview.watched.screenshot("model-replaced")
     }
 })

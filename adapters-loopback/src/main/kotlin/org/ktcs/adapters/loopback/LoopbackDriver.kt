@@ -68,6 +68,16 @@ class LoopbackDriver(
 
     override fun onPaused(paused: Boolean) = simulation.pause(paused)
 
+    // snippet:driver-panel-state
+    override fun panelState(): Map<String, String> = mapOf(
+        "singleStepMode" to simulation.singleStepMode.toString(),
+        "waitingForStep" to simulation.isWaitingForStep().toString(),
+        "timeFactor" to simulation.timeFactor.toString(),
+        "simulationPaused" to simulation.isPaused.toString(),
+        "loaded" to vehicle.loaded.toString(),
+    )
+    // end-snippet
+
     private fun placeAtStart(known: Vehicle) {
         val name = vehicle.position ?: known.properties[LoopbackProperties.INITIAL_POSITION] ?: known.currentPosition
             ?: return placeUnpositioned(known)

@@ -1,6 +1,7 @@
 package org.ktcs.adapters.loopback
 
 import org.ktcs.api.driver.DriverContext
+import org.ktcs.api.driver.DriverPanel
 import org.ktcs.api.driver.VehicleDriver
 import org.ktcs.api.driver.VehicleDriverFactory
 
@@ -11,6 +12,10 @@ class LoopbackDriverFactory(private val settings: LoopbackSettings = LoopbackSet
     override val name: String = NAME
 
     override val description: String = "Simulated vehicle (loopback)"
+
+    // snippet:driver-panel-factory
+    override val panel: DriverPanel = LoopbackPanel.panel
+    // end-snippet
 
     override fun create(vehicleName: String, context: DriverContext): VehicleDriver =
         LoopbackDriver(vehicleName, context, settings, placement.takeIf { settings.placeUnpositionedVehicles })

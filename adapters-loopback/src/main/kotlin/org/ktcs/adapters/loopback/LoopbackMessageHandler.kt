@@ -15,6 +15,7 @@ import org.ktcs.adapters.loopback.LoopbackMessages.SET_PRECISE_POSITION
 import org.ktcs.adapters.loopback.LoopbackMessages.SET_PROPERTY
 import org.ktcs.adapters.loopback.LoopbackMessages.SET_SINGLE_STEP_MODE_ENABLED
 import org.ktcs.adapters.loopback.LoopbackMessages.SET_STATE
+import org.ktcs.adapters.loopback.LoopbackMessages.SET_TIME_FACTOR
 import org.ktcs.adapters.loopback.LoopbackMessages.TRIGGER_SINGLE_STEP
 import org.ktcs.api.driver.DriverContext
 import org.ktcs.api.driver.DriverMessage
@@ -44,11 +45,15 @@ internal class LoopbackMessageHandler(
         SET_STATE to { p -> vehicle.changeState(p.oneOf(VehicleState.entries.toTypedArray(), "value", "state")) },
         SET_SINGLE_STEP_MODE_ENABLED to { p -> simulation.setSingleStepMode(p.boolean("value", "enabled")) },
         TRIGGER_SINGLE_STEP to { simulation.triggerSingleStep() },
+        SET_TIME_FACTOR to { p -> simulation.setTimeFactor(p.positive("value", "timeFactor")) },
         CURRENT_MOVEMENT_COMMAND_FAILED to { failCurrentCommand() },
         SET_PROPERTY to { p -> context.setVehicleProperty(key(p), p.string("value")) },
         RESET_PROPERTY to { p -> context.setVehicleProperty(key(p), null) },
         PUBLISH_EVENT to { p -> context.publishEvent(p.optional("type") ?: DEFAULT_EVENT_TYPE, p.all - "type") },
     )
+
+    /** The message types this handler carries out. */
+    val types: Set<String> get() = handlers.keys
 
     fun handle(message: DriverMessage) {
         val handler = handlers[message.type] ?: return log.debug("ignoring unknown message type {}", message.type)

@@ -33,6 +33,9 @@ object LoopbackMessages {
     /** `value` (or `enabled`): `true` or `false`. */
     const val SET_SINGLE_STEP_MODE_ENABLED: String = PREFIX + "setSingleStepModeEnabled"
     const val TRIGGER_SINGLE_STEP: String = PREFIX + "triggerSingleStep"
+
+    /** `value`: how many times faster than the kernel clock this vehicle's simulated time runs (kTCS's own). */
+    const val SET_TIME_FACTOR: String = PREFIX + "setTimeFactor"
     const val CURRENT_MOVEMENT_COMMAND_FAILED: String = PREFIX + "currentMovementCommandFailed"
 
     /** `key` and `value`. */

@@ -30,6 +30,12 @@ internal class MessageParameters(val all: Map<String, String>) {
         return value
     }
 
+    fun positive(vararg names: String): Double {
+        val value = double(*names)
+        if (value <= 0.0) throw MessageRejectedException("parameter '${names.first()}' must be above 0, was $value")
+        return value
+    }
+
     fun <E : Enum<E>> oneOf(values: Array<E>, vararg names: String): E =
         parse(names, "one of ${values.joinToString()}") { text -> values.firstOrNull { it.name.equals(text, true) } }
 

@@ -42,8 +42,27 @@ internal class Simulation(
         if (paused) activity?.pause() else activity?.resume()
     }
 
+    val timeFactor: Double get() = time.timeFactor
+
+    val isPaused: Boolean get() = paused
+
+    /** In single-step mode: whether a command waits for the next step. */
+    fun isWaitingForStep(): Boolean = singleStepMode && activity == null && queue.pending.isNotEmpty()
+
+    /** Simulated time runs [factor] times faster from now on; what the vehicle is doing carries on at the new pace. */
+    fun setTimeFactor(factor: Double) {
+        activity?.pause()
+        val charging = charger.isCharging
+        charger.stop()
+        time.changeFactor(factor)
+        if (charging) charger.start()
+        if (!paused) activity?.resume()
+        context.publishEvent(LoopbackEvents.TIME_FACTOR_CHANGED, mapOf("timeFactor" to factor.toString()))
+    }
+
     fun setSingleStepMode(enabled: Boolean) {
         singleStepMode = enabled
+        context.publishEvent(LoopbackEvents.SINGLE_STEP_MODE_CHANGED, mapOf("enabled" to enabled.toString()))
         if (!enabled && activity == null && queue.pending.isNotEmpty()) startNext()
     }
 
@@ -68,6 +87,7 @@ internal class Simulation(
     fun failCurrentCommand(): Boolean {
         val command = queue.pending.firstOrNull() ?: return false
         halt()
+        LoopbackEvents.command(context, LoopbackEvents.COMMAND_FAILED, command, mapOf("reason" to "failed by hand"))
         queue.failed(command)
         continueOrRest()
         return true
@@ -94,6 +114,7 @@ internal class Simulation(
         charger.stop()
         vehicle.changeState(VehicleState.EXECUTING)
         val leg = Leg.of(command.step, context.plantModel, context.vehicle()) ?: return unknownPath(command)
+        LoopbackEvents.command(context, LoopbackEvents.COMMAND_STARTED, command)
         val interval = settings.positionReportIntervalSimulatedMillis
         val stopAtEnd = !mayKeepGoing(command)
         begin(Driving(command, leg, velocity, stopAtEnd, planner(leg), vehicle, drain, time, interval, ::driven))
@@ -149,6 +170,7 @@ internal class Simulation(
     }
 
     private fun finish(command: MovementCommand) {
+        LoopbackEvents.command(context, LoopbackEvents.COMMAND_FINISHED, command)
         queue.executed(command)
         continueOrRest()
     }
@@ -181,11 +203,18 @@ internal class Simulation(
         vehicle.changeState(VehicleState.ERROR)
         val where = driving.command.step.path ?: driving.command.step.destinationPoint
         notify("battery empty after ${driving.driven.roundToLong()} mm on $where; stopped until it gets energy")
+        LoopbackEvents.command(
+            context,
+            LoopbackEvents.COMMAND_FAILED,
+            driving.command,
+            mapOf("reason" to "battery empty"),
+        )
         queue.failed(driving.command)
     }
 
     private fun unknownPath(command: MovementCommand) {
         notify("path ${command.step.path} is not in the plant model; command for ${command.transportOrder} failed")
+        LoopbackEvents.command(context, LoopbackEvents.COMMAND_FAILED, command, mapOf("reason" to "unknown path"))
         queue.failed(command)
         continueOrRest()
     }

@@ -45,8 +45,10 @@ internal class VirtualVehicle(private val context: DriverContext) {
     }
 
     fun setLoaded(full: Boolean) {
+        val changed = full != loaded
         loaded = full
         context.reportLoadHandlingDevices(listOf(LoadHandlingDevice(LOAD_HANDLING_DEVICE, full)))
+        if (changed) context.publishEvent(LoopbackEvents.LOAD_CHANGED, mapOf("loaded" to full.toString()))
     }
 
     companion object {

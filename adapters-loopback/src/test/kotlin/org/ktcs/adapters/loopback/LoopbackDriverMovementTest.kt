@@ -68,6 +68,7 @@ class LoopbackDriverMovementTest : FunSpec({
         harness.context.reports.drop(before) shouldContainExactly listOf(
             Report.PositionReport("B"),
             Report.PrecisePosition(Position(10_000, 0), 0.0),
+            Report.Event(LoopbackEvents.COMMAND_FINISHED, mapOf("order" to "T1", "point" to "B", "path" to "A--B")),
             Report.Executed(aToB),
             Report.State(VehicleState.IDLE),
         )

@@ -81,8 +81,11 @@ class LoopbackMessagesTest : FunSpec({
     }
 
     test("setLoaded fills or empties the load handling device") {
-        reportsFor(SET_LOADED, "value" to "true") shouldBe
-            listOf(Report.Devices(listOf(LoadHandlingDevice("default", true))))
+        // A change of the load is also published as a driver event; a message that changes nothing publishes none.
+        reportsFor(SET_LOADED, "value" to "true") shouldBe listOf(
+            Report.Devices(listOf(LoadHandlingDevice("default", true))),
+            Report.Event(LoopbackEvents.LOAD_CHANGED, mapOf("loaded" to "true")),
+        )
         reportsFor(SET_LOADED, "loaded" to "FALSE") shouldBe
             listOf(Report.Devices(listOf(LoadHandlingDevice("default", false))))
         reportsFor(SET_LOADED, "value" to "maybe") shouldBe

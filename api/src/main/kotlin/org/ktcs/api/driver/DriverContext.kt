@@ -53,7 +53,10 @@ public interface DriverContext {
     /** Sets ([value] non-null) or removes a property of the vehicle's current transport order. */
     public fun setTransportOrderProperty(key: String, value: String?)
 
-    /** Publishes a driver-specific event to the kernel's event stream (web API, WebSocket clients). */
+    /**
+     * Publishes a driver-specific event ([org.ktcs.api.event.DriverEvent]) to the kernel's event stream, which the web
+     * API passes on to clients (WebSocket topic `driverEvents`, SSE) and the vehicle's driver panel shows.
+     */
     public fun publishEvent(type: String, payload: Map<String, String> = emptyMap())
 
     /** Tells the operators something. */

@@ -48,6 +48,12 @@ public interface VehicleDriver {
 
     /** The vehicle was paused or resumed. */
     public fun onPaused(paused: Boolean) {}
+
+    /**
+     * What the driver's [DriverPanel] shows besides the kernel's view of the vehicle, e.g. `singleStepMode=true`;
+     * called in the kernel context whenever a client asks.
+     */
+    public fun panelState(): Map<String, String> = emptyMap()
 }
 
 /**
@@ -66,4 +72,7 @@ public interface VehicleDriverFactory {
 
     /** Creates a driver for the vehicle named [vehicleName]; it starts disabled. */
     public fun create(vehicleName: String, context: DriverContext): VehicleDriver
+
+    /** The panel the overview shows for the vehicles this factory's drivers drive, `null` for none. */
+    public val panel: DriverPanel? get() = null
 }

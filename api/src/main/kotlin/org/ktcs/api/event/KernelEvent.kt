@@ -61,7 +61,12 @@ public data class PlantModelReplacedEvent(val model: PlantModel) : KernelEvent
 /** A message for the operators. */
 public data class UserNotificationEvent(val notification: UserNotification) : KernelEvent
 
-/** An event a vehicle driver published. */
+/**
+ * An event a vehicle driver published with [org.ktcs.api.driver.DriverContext.publishEvent]: [type] names it (prefix
+ * it with the driver's name, e.g. `loopback:commandFinished`), [payload] holds a few strings, [timestamp] is the
+ * kernel's time. Web clients get it on the WebSocket topic `driverEvents`, the SSE stream and
+ * `GET /v1/vehicles/{name}/driverEvents`.
+ */
 public data class DriverEvent(
     val vehicle: String,
     val type: String,

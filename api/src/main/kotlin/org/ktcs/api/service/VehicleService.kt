@@ -1,6 +1,8 @@
 package org.ktcs.api.service
 
 import org.ktcs.api.driver.DriverMessage
+import org.ktcs.api.driver.DriverPanelView
+import org.ktcs.api.event.DriverEvent
 import org.ktcs.api.model.AcceptableOrderType
 import org.ktcs.api.model.EnergyLevelThresholdSet
 import org.ktcs.api.model.IntegrationLevel
@@ -44,6 +46,29 @@ public interface VehicleService {
 
     /** Passes a message to the vehicle's driver. */
     public suspend fun sendDriverMessage(vehicle: String, message: DriverMessage)
+
+    /**
+     * The vehicle's driver, its panel, the driver's state and the vehicle's command queue. Fails with
+     * [org.ktcs.api.error.ObjectUnknownException] for an unknown vehicle and
+     * [org.ktcs.api.error.IllegalStateChangeException] for a vehicle without a driver.
+     */
+    public suspend fun driverPanel(vehicle: String): DriverPanelView
+
+    /**
+     * Checks [command] with [parameters] against the panel of [driver] and passes it to the vehicle's driver in the
+     * kernel context. Fails with [org.ktcs.api.error.ObjectUnknownException] for an unknown vehicle,
+     * [org.ktcs.api.error.IllegalStateChangeException] if [driver] does not drive the vehicle, and
+     * [org.ktcs.api.error.InvalidRequestException] naming the problem for an unknown command or a bad parameter.
+     */
+    public suspend fun executeDriverCommand(
+        vehicle: String,
+        driver: String,
+        command: String,
+        parameters: Map<String, String>,
+    )
+
+    /** The latest events the drivers published (at most a few dozen per vehicle), oldest first; `null`: every vehicle. */
+    public suspend fun recentDriverEvents(vehicle: String? = null): List<DriverEvent>
 }
 
 /** The drivers available for a vehicle and the one attached (`null`: none), by factory name. */

@@ -1,7 +1,9 @@
 package org.ktcs.kernel.services
 
 import org.ktcs.api.driver.DriverMessage
+import org.ktcs.api.driver.DriverPanelView
 import org.ktcs.api.error.InvalidRequestException
+import org.ktcs.api.event.DriverEvent
 import org.ktcs.api.model.AcceptableOrderType
 import org.ktcs.api.model.EnergyLevelThresholdSet
 import org.ktcs.api.model.IntegrationLevel
@@ -10,8 +12,11 @@ import org.ktcs.api.model.Vehicle
 import org.ktcs.api.service.DriverAttachment
 import org.ktcs.api.service.VehicleService
 import org.ktcs.kernel.core.KernelCore
+import org.ktcs.kernel.vehicles.DriverPanels
 
 class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
+    private val panels = DriverPanels(kernel.controllers) { kernel.plant.staticModel() }
+
     override suspend fun vehicles(procState: ProcState?): List<Vehicle> =
         kernel.context.call { kernel.plant.vehicles().filter { procState == null || it.procState == procState } }
 
@@ -70,6 +75,20 @@ class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
 
     override suspend fun sendDriverMessage(vehicle: String, message: DriverMessage) =
         kernel.context.call { kernel.controllers.sendMessage(vehicle, message) }
+
+    override suspend fun driverPanel(vehicle: String): DriverPanelView = kernel.context.call { panels.view(vehicle) }
+
+    override suspend fun executeDriverCommand(
+        vehicle: String,
+        driver: String,
+        command: String,
+        parameters: Map<String, String>,
+    ) = kernel.context.call { panels.execute(vehicle, driver, command, parameters) }
+
+    override suspend fun recentDriverEvents(vehicle: String?): List<DriverEvent> = kernel.context.call {
+        if (vehicle != null) kernel.controllers.controller(vehicle)
+        kernel.controllers.recentEvents.of(vehicle)
+    }
 
     private suspend fun update(vehicle: String, change: (Vehicle) -> Vehicle) = kernel.context.call {
         kernel.plant.updateVehicle(vehicle, change)

@@ -20,6 +20,7 @@ import org.ktcs.api.model.VehicleState
 class ControllerDriverContext(
     private val controller: VehicleController,
     private val env: VehicleEnvironment,
+    private val recentEvents: RecentDriverEvents = RecentDriverEvents(),
 ) : DriverContext {
     private val vehicleName = controller.name
 
@@ -86,7 +87,9 @@ class ControllerDriverContext(
     }
 
     override fun publishEvent(type: String, payload: Map<String, String>) = later {
-        env.events.publish(DriverEvent(vehicleName, type, payload, env.context.now()))
+        val event = DriverEvent(vehicleName, type, payload, env.context.now())
+        recentEvents.add(event)
+        env.events.publish(event)
     }
 
     override fun notifyUser(level: NotificationLevel, text: String) = later {

@@ -1,6 +1,8 @@
 package org.ktcs.kernel.vehicles
 
+import org.ktcs.api.driver.CommandStage
 import org.ktcs.api.driver.MovementCommand
+import org.ktcs.api.driver.QueuedCommand
 import org.ktcs.api.driver.VehicleDriver
 import org.ktcs.api.event.NotificationLevel
 import org.ktcs.api.model.IntegrationLevel
@@ -47,6 +49,12 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         this.driver = driver
         this.driverName = driverName
     }
+
+    /** The commands of the current drive order: sent to the driver, waiting for resources, then the rest. */
+    fun commandQueue(): List<QueuedCommand> =
+        sent.map { QueuedCommand(it.command, CommandStage.SENT) } +
+            listOfNotNull(waiting).map { QueuedCommand(it.command, CommandStage.WAITING_FOR_RESOURCES) } +
+            remaining.map { QueuedCommand(it.command, CommandStage.QUEUED) }
 
     /** Starts [order], which is BEING_PROCESSED by this vehicle with a route for every drive order. */
     fun assign(order: TransportOrder) {

@@ -21,6 +21,9 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
     private val controllers = LinkedHashMap<String, VehicleController>()
     private val contexts = HashMap<String, ControllerDriverContext>()
 
+    /** The latest events of the drivers, for clients that connect later. */
+    val recentEvents = RecentDriverEvents()
+
     fun controller(vehicle: String): VehicleController =
         controllers[vehicle] ?: throw ObjectUnknownException("unknown vehicle '$vehicle'")
 
@@ -31,7 +34,7 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
         env.plant.vehicles().forEach { vehicle ->
             val controller = VehicleController(vehicle.name, env)
             controllers[vehicle.name] = controller
-            contexts[vehicle.name] = ControllerDriverContext(controller, env)
+            contexts[vehicle.name] = ControllerDriverContext(controller, env, recentEvents)
             env.plant.updateVehicle(vehicle.name) { it.copy(integrationLevel = integrationLevel) }
             preferredFactory(vehicle.name)?.let { factory ->
                 try {
@@ -67,6 +70,7 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
         contexts.values.forEach(ControllerDriverContext::retire)
         controllers.clear()
         contexts.clear()
+        recentEvents.clear()
     }
 
     fun attachment(vehicle: String): DriverAttachment {
@@ -149,6 +153,9 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
         controller.driver?.onPaused(paused)
         if (!paused) env.vehicleMayBeAvailable()
     }
+
+    /** The factory named [name], or `null`. */
+    fun factory(name: String): VehicleDriverFactory? = factories.firstOrNull { it.name == name }
 
     private fun available(vehicle: String): List<VehicleDriverFactory> =
         factories.filter { it.canDrive(vehicle, contexts.getValue(vehicle)) }

@@ -31,6 +31,7 @@ import org.ktcs.kernel.web.plugins.RequestSizeLimit
 import org.ktcs.kernel.web.plugins.installErrorResponses
 import org.ktcs.kernel.web.v1.V1Json
 import org.ktcs.kernel.web.v1.dispatcherTrigger
+import org.ktcs.kernel.web.v1.drivers.driverPanelRoutes
 import org.ktcs.kernel.web.v1.events.StatusEventBuffer
 import org.ktcs.kernel.web.v1.events.eventRoutes
 import org.ktcs.kernel.web.v1.orders.orderSequenceRoutes
@@ -156,6 +157,7 @@ fun Application.webModule(
             transportOrderRoutes(services)
             orderSequenceRoutes(services)
             vehicleRoutes(services)
+            driverPanelRoutes(services)
             plantModelRoutes(services)
             eventRoutes(services, statusEvents)
             webSocketRoutes(services, options.webSocketBufferSize, webSockets)

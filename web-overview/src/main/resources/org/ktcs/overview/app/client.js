@@ -1,6 +1,8 @@
 // The page's only way to the kernel: the public web API (REST v1) and its WebSocket, like any other client.
 
-const TOPICS = ['vehicles', 'transportOrders', 'orderSequences', 'plantModel', 'notifications'];
+const TOPICS = ['vehicles', 'transportOrders', 'orderSequences', 'plantModel', 'notifications', 'driverEvents'];
+// Topics whose objects are a list in arrival order (the latest kept), not a map by name.
+const LIST_TOPICS = new Set(['notifications', 'driverEvents']);
 const RECONNECT_DELAYS_MS = [500, 1000, 2000, 5000];
 
 /** An API error: the message joins the API's error array. */
@@ -135,14 +137,14 @@ export class KtcsClient {
   }
 
   applySnapshot({ topic, objects }) {
-    if (topic === 'notifications') this.state.set(topic, [...objects]);
+    if (LIST_TOPICS.has(topic)) this.state.set(topic, [...objects]);
     else this.state.set(topic, new Map(objects.map((object) => [object.name, object])));
   }
 
   applyEvent({ topic, previous, current }) {
     const state = this.state.get(topic);
     if (!state) return;
-    if (topic === 'notifications') {
+    if (LIST_TOPICS.has(topic)) {
       state.push(current);
       if (state.length > 1000) state.shift();
     } else if (topic === 'plantModel') {

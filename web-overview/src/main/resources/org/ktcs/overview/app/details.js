@@ -5,9 +5,9 @@ import { el, fill, formatTime, propertyTable } from './dom.js';
 import { outcomeOf } from './orders-view.js';
 import { act, enc } from './actions.js';
 import { vehicleActions } from './vehicle-actions.js';
-import { loopbackActions } from './loopback-actions.js';
 import { operatorActions } from './operator-actions.js';
 import { historyTable, sequenceFacts } from './order-history.js';
+import { driverPanel } from './driver-panel.js';
 
 export class Details {
   constructor(container, { ktcs, client }) {
@@ -36,18 +36,21 @@ export class Details {
     this.plant?.select(selection);
     this.plant?.highlightRoute(selection?.kind === 'order' ? this.orderPaths(selection.name) : []);
     if (!selection) {
+      this.driverPanel?.close();
+      this.driverPanel = null;
       this.container.hidden = true;
       return;
     }
-    // A simulated vehicle's load and its reset sit right under the title, next to why it takes no orders.
-    this.loopback = selection.kind === 'vehicle' ? loopbackActions(this.ktcs, selection.name) : null;
+    // The vehicle's driver panel (e.g. the simulated vehicle's position, energy, load) sits right under the title.
+    this.driverPanel?.close();
+    this.driverPanel = selection?.kind === 'vehicle' ? driverPanel(this.ktcs, this.plant, selection.name) : null;
     this.info = el('div', { className: 'details-info' });
     this.actions = el('div', { className: 'details-actions' }, this.actionsFor(selection));
     fill(this.container,
       el('header', {},
         el('h2', {}, `${kindTitle(selection.kind)} ${selection.name}`),
         el('button', { type: 'button', className: 'close', title: 'Close', onclick: () => this.show(null) }, '×')),
-      this.loopback?.element, this.info, this.actions);
+      this.driverPanel?.element, this.info, this.actions);
     this.container.hidden = false;
     this.refresh();
   }
@@ -61,7 +64,6 @@ export class Details {
       return;
     }
     fill(this.info, this.factsOf(selection.kind, object));
-    if (selection.kind === 'vehicle') this.loopback?.update(object);
     if (selection.kind === 'order') this.plant?.highlightRoute(this.orderPaths(selection.name));
   }
 

@@ -360,7 +360,14 @@ export class PlantView {
     this.drawHighlightedRoute(ctx);
     const moving = this.vehicles.draw(ctx, now);
     this.drawSelection(ctx);
+    if (this.dropTarget) drawDropTarget(ctx, this.dropTarget, this);
     return moving;
+  }
+
+  /** While a vehicle is dragged: where the pointer is and the point it would land on (null ends it). */
+  showDropTarget(vehicle, x, y, point) {
+    this.dropTarget = vehicle ? { vehicle, x, y, point } : null;
+    this.requestFrame();
   }
 
   drawHighlightedRoute(ctx) {
@@ -423,6 +430,28 @@ export class PlantView {
   }
 
 
+}
+
+function drawDropTarget(ctx, { vehicle, x, y, point }, plant) {
+  ctx.save();
+  ctx.strokeStyle = COLOURS.selection;
+  ctx.fillStyle = COLOURS.selection;
+  ctx.lineWidth = 3;
+  const target = point ? plant.geometry.points.get(point) : null;
+  if (target) {
+    const p = plant.view.toScreen(target.x, target.y);
+    ctx.beginPath();
+    ctx.arc(p.x, p.y, 16, 0, 2 * Math.PI);
+    ctx.stroke();
+  }
+  ctx.globalAlpha = 0.6;
+  ctx.beginPath();
+  ctx.arc(x, y, 9, 0, 2 * Math.PI);
+  ctx.fill();
+  ctx.globalAlpha = 1;
+  ctx.font = '12px sans-serif';
+  ctx.fillText(point ? `${vehicle} → ${point}` : vehicle, x + 12, y - 12);
+  ctx.restore();
 }
 
 function intersects(element, rect) {

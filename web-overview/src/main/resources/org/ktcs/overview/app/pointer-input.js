@@ -1,4 +1,5 @@
-// Pointer input on the plant view: drag to pan, wheel to zoom, click to select what lies under the pointer.
+// Pointer input on the plant view: drag to pan, wheel to zoom, click to select what lies under the pointer. A
+// vehicle whose driver panel accepts placement (plant.vehicleDrop) is dragged instead, and dropped onto a point.
 
 import { distanceToLine } from './geometry.js';
 import { locationSymbolSize } from './shapes.js';
@@ -22,12 +23,30 @@ export function elementAt(plant, x, y) {
   return found ? { kind: found.kind, name: found.name } : null;
 }
 
+/** The point drawn nearest to a canvas position, within reach of the pointer, or null. */
+function pointAt(plant, x, y) {
+  if (!plant.geometry) return null;
+  const model = plant.view.toModel(x, y);
+  const reach = 14 / plant.view.scale;
+  const rect = { minX: model.x - reach, maxX: model.x + reach, minY: model.y - reach, maxY: model.y + reach };
+  return [...plant.geometry.index.query(rect)].filter((e) => e.kind === 'point' && plant.isVisible(e))
+    .map((e) => ({ name: e.name, d: Math.hypot(e.x - model.x, e.y - model.y) }))
+    .filter(({ d }) => d <= reach).sort((a, b) => a.d - b.d)[0]?.name ?? null;
+}
+
+function dropVehicle(plant, vehicle, point) {
+  plant.showDropTarget(null);
+  if (point && plant.vehicleDrop?.vehicle === vehicle) plant.vehicleDrop.drop(point);
+}
+
 /** Pans, zooms and selects on [plant]'s overlay canvas. */
 export function installPointerInput(plant) {
   const target = plant.overlay;
   let drag = null;
   target.addEventListener('pointerdown', (event) => {
-    drag = { x: event.offsetX, y: event.offsetY, moved: 0 };
+    const vehicle = plant.vehicleDrop?.vehicle;
+    const grabbed = vehicle && plant.vehicles.hit(event.offsetX, event.offsetY) === vehicle ? vehicle : null;
+    drag = { x: event.offsetX, y: event.offsetY, moved: 0, vehicle: grabbed };
     target.setPointerCapture(event.pointerId);
   });
   target.addEventListener('pointermove', (event) => {
@@ -37,7 +56,9 @@ export function installPointerInput(plant) {
     drag.moved += Math.abs(dx) + Math.abs(dy);
     drag.x = event.offsetX;
     drag.y = event.offsetY;
-    if (drag.moved > 4) {
+    if (drag.vehicle) {
+      if (drag.moved > 4) plant.showDropTarget(drag.vehicle, drag.x, drag.y, pointAt(plant, drag.x, drag.y));
+    } else if (drag.moved > 4) {
       plant.userMoved = true;
       plant.stopFollowing();
       plant.view.pan(dx, dy);
@@ -46,10 +67,14 @@ export function installPointerInput(plant) {
   });
   target.addEventListener('pointerup', (event) => {
     if (drag && drag.moved <= 4) plant.onSelect(elementAt(plant, event.offsetX, event.offsetY));
+    else if (drag?.vehicle) dropVehicle(plant, drag.vehicle, pointAt(plant, event.offsetX, event.offsetY));
     drag = null;
   });
   // A cancelled gesture (touch taken over by the browser, window lost focus) ends the drag without a selection.
-  const endDrag = () => { drag = null; };
+  const endDrag = () => {
+    if (drag?.vehicle) plant.showDropTarget(null);
+    drag = null;
+  };
   target.addEventListener('pointercancel', endDrag);
   target.addEventListener('lostpointercapture', endDrag);
   target.addEventListener('wheel', (event) => {

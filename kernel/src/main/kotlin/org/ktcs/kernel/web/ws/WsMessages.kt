@@ -59,6 +59,7 @@ enum class WsTopic(val wireName: String) {
     ORDER_SEQUENCES("orderSequences"),
     PLANT_MODEL("plantModel"),
     NOTIFICATIONS("notifications"),
+    DRIVER_EVENTS("driverEvents"),
     ;
 
     companion object {

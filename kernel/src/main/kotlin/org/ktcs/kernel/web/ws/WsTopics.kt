@@ -3,6 +3,7 @@ package org.ktcs.kernel.web.ws
 import kotlinx.serialization.encodeToString
 import kotlinx.serialization.json.JsonElement
 import kotlinx.serialization.json.encodeToJsonElement
+import org.ktcs.api.event.DriverEvent
 import org.ktcs.api.event.KernelEvent
 import org.ktcs.api.event.LocationEvent
 import org.ktcs.api.event.ObjectEvent
@@ -16,6 +17,7 @@ import org.ktcs.api.model.Vehicle
 import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.web.v1.V1Json
+import org.ktcs.kernel.web.v1.drivers.toDto
 import org.ktcs.kernel.web.v1.events.toSseDto
 import org.ktcs.kernel.web.v1.plantmodel.toDto
 import org.ktcs.kernel.web.v1.toWire
@@ -38,6 +40,8 @@ internal object WsTopics {
         WsTopic.PLANT_MODEL -> listOf(json.encodeToJsonElement(services.plantModel.plantModel().toDto()))
 
         WsTopic.NOTIFICATIONS -> services.notifications.notifications().map { json.encodeToJsonElement(it.toDto()) }
+
+        WsTopic.DRIVER_EVENTS -> services.vehicles.recentDriverEvents().map { json.encodeToJsonElement(it.toDto()) }
     }
 
     /** The topic that carries [event], or `null` if none does; tells whether [change] is needed at all. */
@@ -47,6 +51,7 @@ internal object WsTopics {
         is OrderSequenceEvent -> WsTopic.ORDER_SEQUENCES
         is PathEvent, is LocationEvent -> WsTopic.PLANT_MODEL
         is UserNotificationEvent -> WsTopic.NOTIFICATIONS
+        is DriverEvent -> WsTopic.DRIVER_EVENTS
         else -> null
     }
 
@@ -70,6 +75,8 @@ internal object WsTopics {
             null,
             json.encodeToString(event.notification.toDto()),
         )
+
+        is DriverEvent -> Change(WsTopic.DRIVER_EVENTS, null, json.encodeToString(event.toDto()))
 
         else -> null
     }

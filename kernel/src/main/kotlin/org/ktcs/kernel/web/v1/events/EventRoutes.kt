@@ -10,6 +10,7 @@ import io.ktor.server.routing.get
 import io.ktor.utils.io.writeStringUtf8
 import kotlinx.serialization.json.Json
 import org.ktcs.api.error.InvalidRequestException
+import org.ktcs.api.event.DriverEvent
 import org.ktcs.api.event.KernelEvent
 import org.ktcs.api.event.OrderSequenceEvent
 import org.ktcs.api.event.TransportOrderEvent
@@ -17,6 +18,8 @@ import org.ktcs.api.event.VehicleEvent
 import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.web.v1.V1Json
 import org.ktcs.kernel.web.v1.booleanQuery
+import org.ktcs.kernel.web.v1.drivers.DriverEventDto
+import org.ktcs.kernel.web.v1.drivers.toDto
 import org.ktcs.kernel.web.v1.toWire
 import java.time.Instant
 
@@ -79,11 +82,18 @@ private fun sseFrame(event: KernelEvent, wanted: Set<String>): String? {
             SseEventNames.ORDER_SEQUENCES to
                 json.encodeToString(ObjectEventDto.serializer(SseOrderSequenceDto.serializer()), event.toDto())
 
+        is DriverEvent -> SseEventNames.DRIVER_EVENTS to json.encodeToString(DriverEventDto.serializer(), event.toDto())
+
         else -> return null
     }
     return if (name in wanted) "event: $name\ndata: $data\n\n" else null
 }
 
-private val SSE_KINDS = listOf(SseEventNames.VEHICLES, SseEventNames.TRANSPORT_ORDERS, SseEventNames.ORDER_SEQUENCES)
+private val SSE_KINDS = listOf(
+    SseEventNames.VEHICLES,
+    SseEventNames.TRANSPORT_ORDERS,
+    SseEventNames.ORDER_SEQUENCES,
+    SseEventNames.DRIVER_EVENTS,
+)
 private const val DEFAULT_TIMEOUT_MILLIS = 1_000L
 private const val MAX_TIMEOUT_MILLIS = 10_000L

@@ -25,4 +25,7 @@ object SseEventNames {
     const val VEHICLES = "/events/vehicles"
     const val TRANSPORT_ORDERS = "/events/transportOrders"
     const val ORDER_SEQUENCES = "/events/orderSequences"
+
+    /** kTCS's own: events vehicle drivers publish. */
+    const val DRIVER_EVENTS = "/events/driverEvents"
 }
