@@ -56,14 +56,28 @@ private fun plants(laneKinds: List<Pair<Int, Lane>>): Arb<RandomPlant> =
 private val oneWay = listOf(3 to Lane.FORWARD, 3 to Lane.BACKWARD, 1 to Lane.NONE)
 private val mixed = listOf(3 to Lane.FORWARD, 3 to Lane.BACKWARD, 2 to Lane.TWO_WAY, 1 to Lane.NONE)
 
-/** Runs [orders] random orders on [plant] in virtual time, as `ktcs simulate` does. */
-private fun simulate(plant: RandomPlant, orders: Int, seed: Long): SimulationReport {
-    val config = ConfigLoader().load(null, emptyMap(), emptyList())
-    return SimulationRunner(plant.build(), config, listOf(stepVehicles), orders, seed).run()
+/**
+ * Runs [iterations] random plants of [lanes], each with a random stream of orders, in virtual time as `ktcs simulate`
+ * does, and checks each run's report.
+ */
+private suspend fun forRandomRuns(
+    lanes: List<Pair<Int, Lane>>,
+    seed: Long,
+    iterations: Int,
+    check: SimulationReport.(orders: Int) -> Unit,
+) {
+    checkAll(PropTestConfig(seed = seed, iterations = iterations), plants(lanes), Arb.int(4..10), Arb.long()) {
+            plant,
+            orders,
+            orderSeed,
+        ->
+        val config = ConfigLoader().load(null, emptyMap(), emptyList())
+        val report = SimulationRunner(plant.build(), config, listOf(stepVehicles), orders, orderSeed).run()
+        withClue("$plant, $orders orders, seed $orderSeed:\n${report.lines().joinToString("\n")}") {
+            report.check(orders)
+        }
+    }
 }
-
-private fun SimulationReport.clue(orders: Int, seed: Long) =
-    "$plant, $orders orders, seed $seed:\n${lines().joinToString("\n")}"
 
 /**
  * Random small plants and order streams in virtual time (the kernel's code and timing, test vehicles at 1 m/s). Each
@@ -73,18 +87,11 @@ class TrafficPropertyTest : FunSpec({
     context("nothing is held twice, and the fleet never stops without the watchdog reporting why") {
         val kinds = listOf("one-way lanes" to oneWay, "one-way and two-way lanes" to mixed)
         withData(nameFn = { it.first }, kinds) { (_, lanes) ->
-            checkAll(PropTestConfig(seed = 1_111, iterations = 25), plants(lanes), Arb.int(4..10), Arb.long()) {
-                    plant,
-                    orders,
-                    seed,
-                ->
-                val report = simulate(plant, orders, seed)
-                withClue(report.clue(orders, seed)) {
-                    report.doubleAllocations shouldBe 0
-                    report.sharedPositions shouldBe 0
-                    val done = report.ordersFinished + report.ordersUnroutable == orders
-                    (done || report.deadlocksDetected > 0) shouldBe true
-                }
+            forRandomRuns(lanes, seed = 1_111, iterations = 25) { orders ->
+                doubleAllocations shouldBe 0
+                sharedPositions shouldBe 0
+                val done = ordersFinished + ordersUnroutable == orders
+                (done || deadlocksDetected > 0) shouldBe true
             }
         }
     }
@@ -93,16 +100,9 @@ class TrafficPropertyTest : FunSpec({
     // of 60 mixed ones finish cleanly; the rest reach a state where the watchdog reports a deadlock (README, "Traffic
     // control: figures"). Enable it when the rule is complete.
     test("every order finishes or is unroutable, and the watchdog never fires").config(enabled = false) {
-        checkAll(PropTestConfig(seed = 2_222, iterations = 40), plants(mixed), Arb.int(4..10), Arb.long()) {
-                plant,
-                orders,
-                seed,
-            ->
-            val report = simulate(plant, orders, seed)
-            withClue(report.clue(orders, seed)) {
-                report.ordersFinished + report.ordersUnroutable shouldBe orders
-                report.deadlocksDetected shouldBe 0
-            }
+        forRandomRuns(mixed, seed = 2_222, iterations = 40) { orders ->
+            ordersFinished + ordersUnroutable shouldBe orders
+            deadlocksDetected shouldBe 0
         }
     }
 })
