@@ -87,13 +87,17 @@ internal class RouteSafety(
         return true
     }
 
-    /** Who holds what [client] would need next after a grant of [keys]: whom a held-back grant waits for. */
+    /**
+     * Who holds what [client] would need next after a grant of [keys]: whom a held-back grant waits for. The ways on
+     * count only when every one of them is held, as in the check itself: one free way on is a way out.
+     */
     fun blockersAfter(client: String, keys: Set<String>, behind: Set<String>): Map<String, Set<String>> {
         val ahead = lookAhead(client, skipping = keys, holding = keys + behind)
         val blockers = HashMap<String, MutableSet<String>>()
-        for (key in ahead.required + ahead.options.flatten()) {
-            holders(key).filter { it != client }.forEach { blockers.getOrPut(it, ::HashSet) += key }
-        }
+        fun note(key: String) = holders(key).filter { it != client }.forEach { blockers.getOrPut(it, ::HashSet) += key }
+        ahead.required.forEach(::note)
+        val noWayOn = ahead.options.all { option -> option.any { key -> holders(key).any { it != client } } }
+        if (noWayOn) ahead.options.flatten().forEach(::note)
         return blockers
     }
 

@@ -104,4 +104,33 @@ class DeadlockAvoidanceTest : FunSpec({
         f.scheduler.grantsHeldBack shouldBe 0
         v2.granted.shouldBeEmpty()
     }
+
+    test("a grant held back while one way on is still free is no deadlock for the watchdog") {
+        // The loop P -> Q -> R -> S -> P with station stubs T (at R) and U (at S) and a way on S -> X. v1 stands in T
+        // and will leave over R; v2 may not take R (it would wait at R for T); v3 drives from S to P and waits for Q.
+        val model = plant("P-Q", "Q-R", "R-S", "S-P", "R-T", "T-R", "S-U", "U-S", "S-X")
+            .let {
+                it.copy(
+                    locations = listOf("L1" to "T", "L2" to "U").map { (name, point) ->
+                        Location(name, "station", links = listOf(Link(point)))
+                    },
+                )
+            }
+        val f = SchedulerFixture(model)
+        val (v1, v2, v3) = listOf("v1" to "T", "v2" to "Q", "v3" to "S").map { (name, point) ->
+            f.client(name).also { f.scheduler.allocateNow(it, setOf(point)) }
+        }
+        f.scheduler.claim(v1, listOf(setOf("T-R", "R"), setOf("R-S", "S"), setOf("S-U", "U", "L2")))
+        f.scheduler.claim(v2, listOf(setOf("Q-R", "R"), setOf("R-T", "T", "L1")))
+        f.scheduler.claim(v3, listOf(setOf("S-P", "P"), setOf("P-Q", "Q")))
+        f.allocate(v3, "S-P", "P")
+        f.allocate(v3, "P-Q", "Q")
+        f.allocate(v2, "Q-R", "R")
+        v2.granted.shouldBeEmpty()
+
+        f.clock.advance(3_000)
+
+        // After T, v2 would need the way out of T: over R and S, then any one of P (v3), U or X; U and X are free.
+        DeadlockDetector.detect(f.scheduler.waitForGraph()).shouldBeEmpty()
+    }
 })

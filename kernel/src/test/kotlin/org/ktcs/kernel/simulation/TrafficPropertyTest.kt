@@ -96,7 +96,7 @@ class TrafficPropertyTest : FunSpec({
         }
     }
 
-    // The target of issue #11, not met yet: with the look-ahead rule, 31 of 60 random one-way plants (seed 77) and 14
+    // The target of issue #11, not met yet: with the look-ahead rule, 32 of 60 random one-way plants (seed 77) and 15
     // of 60 mixed ones finish cleanly; the rest reach a state where the watchdog reports a deadlock (README, "Traffic
     // control: figures"). Enable it when the rule is complete.
     test("every order finishes or is unroutable, and the watchdog never fires").config(enabled = false) {
