@@ -52,7 +52,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
 
     override fun claim(client: SchedulerClient, resources: List<Set<String>>) {
         claims[client.name] = resources.map { it.toSet() }
-        safety.claim(client.name, resources.map(::keysOf), resources.lastOrNull()?.let(::pointOf))
+        val stops = resources.map { step -> if (step.any(safety::isLocation)) pointOf(step) else null }
+        safety.claim(client.name, resources.map(::keysOf), stops, resources.lastOrNull()?.let(::pointOf))
         retryDeferred()
     }
 
@@ -141,7 +142,11 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     private fun heldBackBy(request: Request): Map<String, Set<String>> {
         val since = deferredSince[request.seq] ?: return emptyMap()
         if (clock.elapsedMillis() - since < HELD_BACK_REPORT_MILLIS || request !in deferred) return emptyMap()
-        return safety.blockersAfter(request.client.name, request.keys)
+        return safety.blockersAfter(
+            request.client.name,
+            request.keys,
+            keysOf(request.client.heldAfter(request.resources)),
+        )
     }
 
     // Of what a client blocks, what it holds now but gives up as it drives on does not count.

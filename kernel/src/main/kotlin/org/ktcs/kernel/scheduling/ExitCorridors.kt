@@ -20,6 +20,7 @@ internal class ExitCorridors(model: PlantModel) {
         }
     }
     private val points = model.points.mapTo(HashSet()) { it.name }
+    private val locations = model.locations.mapTo(HashSet()) { it.name }
     private val twoWay: Set<String> = run {
         val directed = model.paths.filter { it.maxVelocity > 0 }.mapTo(HashSet()) {
             it.sourcePoint to
@@ -37,6 +38,8 @@ internal class ExitCorridors(model: PlantModel) {
 
     fun isPoint(name: String): Boolean = name in points
 
+    fun isLocation(name: String): Boolean = name in locations
+
     /**
      * What a vehicle standing at [point] needs to get away from it: the single-track corridor it must drive first
      * ([Exit.required]) and the ways on from the first point with a choice, of which it needs any one
@@ -45,14 +48,17 @@ internal class ExitCorridors(model: PlantModel) {
     fun from(point: String): Exit = cache.getOrPut(point) {
         val corridor = LinkedHashSet<String>()
         var current = point
+        var previous: String? = null
         repeat(MAX_CORRIDOR) {
-            val ways = exits[current].orEmpty()
+            // Turning back on a two-way track leads into the corridor just driven, never out of it.
+            val ways = exits[current].orEmpty().filter { it.second != previous }
             val only = ways.singleOrNull()
             if (only == null || only.second == point) {
                 return@getOrPut Exit(corridor, ways.map { (path, next) -> setOf(path, next) })
             }
             corridor += only.first
             corridor += only.second
+            previous = current
             current = only.second
         }
         Exit(corridor, emptyList())

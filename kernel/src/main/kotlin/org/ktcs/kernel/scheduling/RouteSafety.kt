@@ -21,7 +21,8 @@ internal class RouteSafety(
     private val holdings: (String) -> Set<String>,
     private val holders: (String) -> Collection<String>,
 ) {
-    private class Step(val keys: Set<String>, val twoWay: Boolean)
+    /** One claimed step; [stop] is the way out of where it ends if the vehicle stops there for an operation. */
+    private class Step(val keys: Set<String>, val twoWay: Boolean, val stop: Exit?)
 
     private class LookAhead(val required: Set<String>, val options: List<Set<String>>)
 
@@ -34,11 +35,18 @@ internal class RouteSafety(
 
     fun isPoint(name: String): Boolean = exits.isPoint(name)
 
-    /** Replaces [client]'s claim with [route] (keys per step, in driving order) ending at [end]. */
-    fun claim(client: String, route: List<Set<String>>, end: String?) {
-        routes[client] = route.mapTo(ArrayDeque()) { keys -> Step(keys, keys.any(exits::isTwoWay)) }
+    /**
+     * Replaces [client]'s claim with [route] (keys per step, in driving order) ending at [end]; [stops] names, per
+     * step, the point where the vehicle stops for an operation at its end (null: it drives on).
+     */
+    fun claim(client: String, route: List<Set<String>>, stops: List<String?>, end: String?) {
+        routes[client] = route.zip(stops).mapTo(ArrayDeque()) { (keys, stop) ->
+            Step(keys, keys.any(exits::isTwoWay), stop?.let(exits::from))
+        }
         wayOut[client] = end?.let(exits::from) ?: Exit.NONE
     }
+
+    fun isLocation(name: String): Boolean = exits.isLocation(name)
 
     /** [client] has no claim any more; it needs the way out of wherever it stands. */
     fun unclaim(client: String) {
@@ -71,21 +79,25 @@ internal class RouteSafety(
      * drives, so waits for that resolve by themselves.
      */
     fun mayGrant(client: String, keys: Set<String>, behind: Set<String>): Boolean {
-        val walk = Walk(client, keys + behind)
-        if (walk.isBlocked(lookAhead(client, skipping = keys), client)) {
+        val held = keys + behind
+        if (Walk(client, held).isBlocked(lookAhead(client, skipping = keys, holding = held), client)) {
             heldBack++
             return false
         }
         return true
     }
 
-    /** Who holds what [client] would need next after a grant of [keys]: whom a held-back grant waits for. */
-    fun blockersAfter(client: String, keys: Set<String>): Map<String, Set<String>> {
-        val ahead = lookAhead(client, skipping = keys)
+    /**
+     * Who holds what [client] would need next after a grant of [keys]: whom a held-back grant waits for. The ways on
+     * count only when every one of them is held, as in the check itself: one free way on is a way out.
+     */
+    fun blockersAfter(client: String, keys: Set<String>, behind: Set<String>): Map<String, Set<String>> {
+        val ahead = lookAhead(client, skipping = keys, holding = keys + behind)
         val blockers = HashMap<String, MutableSet<String>>()
-        for (key in ahead.required + ahead.options.flatten()) {
-            holders(key).filter { it != client }.forEach { blockers.getOrPut(it, ::HashSet) += key }
-        }
+        fun note(key: String) = holders(key).filter { it != client }.forEach { blockers.getOrPut(it, ::HashSet) += key }
+        ahead.required.forEach(::note)
+        val noWayOn = ahead.options.all { option -> option.any { key -> holders(key).any { it != client } } }
+        if (noWayOn) ahead.options.flatten().forEach(::note)
         return blockers
     }
 
@@ -144,8 +156,16 @@ internal class RouteSafety(
         }
     }
 
-    // The next step, every following step while on a two-way stretch, and the way out at the end of the claim.
-    private fun lookAhead(client: String, skipping: Set<String>? = null): LookAhead {
+    // The next step, every following step while on a two-way stretch or inside what the client holds anyway (a
+    // SINGLE_VEHICLE_ONLY block it is in: its real next need is the first step out of it), and the way out at the end
+    // of the claim. A stop for an operation on the way ends the look-ahead with the way out of that stop: a vehicle
+    // standing there waits for nothing else. A grantee ([skipping] its grant) is looked at as it will be: holding
+    // [holding].
+    private fun lookAhead(
+        client: String,
+        skipping: Set<String>? = null,
+        holding: Set<String> = holdings(client),
+    ): LookAhead {
         val exit = wayOut[client] ?: Exit.NONE
         val route = routes[client] ?: return LookAhead(exit.required, exit.options)
         val ahead = HashSet<String>()
@@ -156,7 +176,8 @@ internal class RouteSafety(
                 continue
             }
             ahead += step.keys
-            if (!step.twoWay) return LookAhead(ahead, emptyList())
+            if (!step.twoWay && !holding.containsAll(step.keys)) return LookAhead(ahead, emptyList())
+            step.stop?.let { return LookAhead(ahead + it.required, it.options) }
         }
         ahead += exit.required
         return LookAhead(ahead, exit.options)

@@ -8,6 +8,7 @@ data class SimulationReport(
     val ordersCreated: Int,
     val ordersFinished: Int,
     val ordersFailed: Int,
+    val ordersUnroutable: Int,
     val makespanSimulatedSeconds: Double,
     val kernelCpuSeconds: Double,
     val deadlocksDetected: Int,
@@ -29,6 +30,7 @@ data class SimulationReport(
         "orders_created: $ordersCreated",
         "orders_finished: $ordersFinished",
         "orders_failed: $ordersFailed",
+        "orders_unroutable: $ordersUnroutable",
         "makespan_simulated_s: ${"%.1f".format(makespanSimulatedSeconds)}",
         "makespan_lower_bound_s: ${"%.1f".format(lowerBoundSeconds)}",
         "makespan_over_lower_bound: ${"%.2f".format(

@@ -116,10 +116,8 @@ class SimulationRunner(
             clock = if (realTime) "real time, time factor $timeFactor" else "virtual time, time factor $timeFactor",
             ordersCreated = orders,
             ordersFinished = all.count { it.state == TransportOrderState.FINISHED },
-            ordersFailed = all.count {
-                it.state == TransportOrderState.FAILED ||
-                    it.state == TransportOrderState.UNROUTABLE
-            },
+            ordersFailed = all.count { it.state == TransportOrderState.FAILED },
+            ordersUnroutable = all.count { it.state == TransportOrderState.UNROUTABLE },
             makespanSimulatedSeconds = makespanSeconds,
             kernelCpuSeconds = cpuSeconds,
             deadlocksDetected = kernel.core.watchdog.detected,

@@ -426,15 +426,19 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
 
     /**
      * A vehicle starting a route from where it stood may find its first step leading into a queue of vehicles that
-     * wait for its own point (it stood idle beside a full loop): going that way would close a deadlock. Route
-     * around that step instead, if the plant allows; returns whether it rerouted.
+     * wait for its own point (it stood idle beside a full loop, or at a station whose other way out it was counted
+     * on to take): going that way would close a deadlock. Route around that step's path instead (a detour that leaves
+     * the point free, even if it joins the same queue later), else around the whole step, if the plant allows;
+     * returns whether it rerouted.
      */
     private fun avoidBlockedStart(): Boolean {
         val scheduler = env.scheduler() as? org.ktcs.kernel.scheduling.DefaultScheduler ?: return false
         if (sent.isNotEmpty() || !scheduler.claimIsBlocked(this)) return false
         val position = env.plant.vehicle(name).currentPosition
-        val first = remaining.firstOrNull()?.resources ?: return false
-        return reroute(first - setOfNotNull(position))
+        val first = remaining.firstOrNull() ?: return false
+        val path = first.command.step.path
+        return (path != null && reroute(setOf(path)) && !scheduler.claimIsBlocked(this)) ||
+            reroute(first.resources - setOfNotNull(position))
     }
 
     /** The driver can take more commands now (e.g. it was enabled). */

@@ -4,6 +4,8 @@ import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.shouldBe
+import org.ktcs.api.model.Link
+import org.ktcs.api.model.Location
 
 /** The traffic rule (developer's guide, section 12) on the directed square A → B → C → D → A with a way in E → D. */
 class DeadlockAvoidanceTest : FunSpec({
@@ -54,6 +56,81 @@ class DeadlockAvoidanceTest : FunSpec({
         f.allocate(vehicles[2], "C-D", "D")
         f.allocate(vehicles[1], "B-C", "C")
 
+        DeadlockDetector.detect(f.scheduler.waitForGraph()).shouldBeEmpty()
+    }
+
+    test("a vehicle inside a single-vehicle block looks past it: entering the loop behind it is held back") {
+        // v1 holds the block {B, C} and will need D (v2) after it; v2 needs A; v3 taking A would close the cycle.
+        val f =
+            SchedulerFixture(
+                plant("A-B", "B-C", "C-D", "D-A", "E-A", blocks = listOf(singleVehicleBlock("BC", "B", "B-C", "C"))),
+            )
+        val (v1, v2, v3) = listOf("v1" to "B", "v2" to "D", "v3" to "E").map { (name, point) ->
+            f.client(name).also { f.scheduler.allocateNow(it, setOf(point)) }
+        }
+        f.scheduler.claim(v1, listOf(setOf("B-C", "C"), setOf("C-D", "D")))
+        f.scheduler.claim(v2, listOf(setOf("D-A", "A"), setOf("A-B", "B")))
+        f.scheduler.claim(v3, listOf(setOf("E-A", "A"), setOf("A-B", "B")))
+
+        f.allocate(v3, "E-A", "A")
+
+        v3.granted.shouldBeEmpty()
+        f.scheduler.grantsHeldBack shouldBe 1
+    }
+
+    test("the way out of a two-way stub does not count turning back into it") {
+        val model = plant("S-A", "A-S", "A-B", "C-A", "B-C", "B-D")
+
+        val exit = ExitCorridors(model).from("S")
+
+        exit.required shouldBe setOf("S-A", "A", "A-B", "B")
+        exit.options shouldContainExactly listOf(setOf("B-C", "C"), setOf("B-D", "D"))
+    }
+
+    test("a stop for an operation on a two-way stretch ends the look-ahead with the way out of the stop") {
+        // A two-way track A - B - C with a station stub S at B; v2 stands idle at C.
+        val model = plant("A-B", "B-A", "B-C", "C-B", "B-S", "S-B")
+            .let { it.copy(locations = listOf(Location("L", "station", links = listOf(Link("S"))))) }
+        val f = SchedulerFixture(model)
+        val (v1, v2) = listOf("v1" to "A", "v2" to "C").map { (name, point) ->
+            f.client(name).also { f.scheduler.allocateNow(it, setOf(point)) }
+        }
+        f.scheduler.claim(v1, listOf(setOf("A-B", "B"), setOf("B-S", "S", "L"), setOf("S-B", "B"), setOf("B-C", "C")))
+
+        // At S, v1 stands aside with a way out over B to A: v2 at C needs nothing v1 keeps from it.
+        f.allocate(v1, "A-B", "B")
+
+        v1.granted shouldContainExactly listOf(setOf("A-B", "B"))
+        f.scheduler.grantsHeldBack shouldBe 0
+        v2.granted.shouldBeEmpty()
+    }
+
+    test("a grant held back while one way on is still free is no deadlock for the watchdog") {
+        // The loop P -> Q -> R -> S -> P with station stubs T (at R) and U (at S) and a way on S -> X. v1 stands in T
+        // and will leave over R; v2 may not take R (it would wait at R for T); v3 drives from S to P and waits for Q.
+        val model = plant("P-Q", "Q-R", "R-S", "S-P", "R-T", "T-R", "S-U", "U-S", "S-X")
+            .let {
+                it.copy(
+                    locations = listOf("L1" to "T", "L2" to "U").map { (name, point) ->
+                        Location(name, "station", links = listOf(Link(point)))
+                    },
+                )
+            }
+        val f = SchedulerFixture(model)
+        val (v1, v2, v3) = listOf("v1" to "T", "v2" to "Q", "v3" to "S").map { (name, point) ->
+            f.client(name).also { f.scheduler.allocateNow(it, setOf(point)) }
+        }
+        f.scheduler.claim(v1, listOf(setOf("T-R", "R"), setOf("R-S", "S"), setOf("S-U", "U", "L2")))
+        f.scheduler.claim(v2, listOf(setOf("Q-R", "R"), setOf("R-T", "T", "L1")))
+        f.scheduler.claim(v3, listOf(setOf("S-P", "P"), setOf("P-Q", "Q")))
+        f.allocate(v3, "S-P", "P")
+        f.allocate(v3, "P-Q", "Q")
+        f.allocate(v2, "Q-R", "R")
+        v2.granted.shouldBeEmpty()
+
+        f.clock.advance(3_000)
+
+        // After T, v2 would need the way out of T: over R and S, then any one of P (v3), U or X; U and X are free.
         DeadlockDetector.detect(f.scheduler.waitForGraph()).shouldBeEmpty()
     }
 })

@@ -1,0 +1,108 @@
+package org.ktcs.kernel.simulation
+
+import io.kotest.assertions.withClue
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.datatest.withData
+import io.kotest.matchers.shouldBe
+import io.kotest.property.Arb
+import io.kotest.property.PropTestConfig
+import io.kotest.property.arbitrary.boolean
+import io.kotest.property.arbitrary.element
+import io.kotest.property.arbitrary.filter
+import io.kotest.property.arbitrary.flatMap
+import io.kotest.property.arbitrary.int
+import io.kotest.property.arbitrary.list
+import io.kotest.property.arbitrary.long
+import io.kotest.property.arbitrary.map
+import io.kotest.property.checkAll
+import org.koin.dsl.bind
+import org.koin.dsl.module
+import org.ktcs.api.driver.VehicleDriverFactory
+import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.core.StepDriverFactory
+import org.ktcs.kernel.extension.KtcsExtension
+
+private val stepVehicles = object : KtcsExtension {
+    override val name = "step vehicles"
+
+    override fun module() = module { single { StepDriverFactory() } bind VehicleDriverFactory::class }
+}
+
+private fun lanes(weights: List<Pair<Int, Lane>>) = Arb.element(
+    weights.flatMap { (weight, lane) ->
+        List(weight) { lane }
+    },
+)
+
+/** Random strongly connected plants of [laneKinds]: 3x3 to 4x4 grids with stations and park bays on dead-end stubs, maybe blocks. */
+private fun plants(laneKinds: List<Pair<Int, Lane>>): Arb<RandomPlant> =
+    Arb.int(3..4).flatMap { width ->
+        Arb.int(3..4).flatMap { height ->
+            Arb.list(lanes(laneKinds), RandomPlant.laneCount(width, height)..RandomPlant.laneCount(width, height))
+                .flatMap { lanes ->
+                    Arb.int(3..4).flatMap { stations ->
+                        Arb.int(2..4).flatMap { vehicles ->
+                            Arb.boolean().flatMap { blocks ->
+                                Arb.long().map { seed ->
+                                    RandomPlant(width, height, lanes, stations, vehicles, blocks, seed)
+                                }
+                            }
+                        }
+                    }
+                }
+        }
+    }.filter(RandomPlant::isStronglyConnected)
+
+private val oneWay = listOf(3 to Lane.FORWARD, 3 to Lane.BACKWARD, 1 to Lane.NONE)
+private val mixed = listOf(3 to Lane.FORWARD, 3 to Lane.BACKWARD, 2 to Lane.TWO_WAY, 1 to Lane.NONE)
+
+/**
+ * Runs [iterations] random plants of [lanes], each with a random stream of orders, in virtual time as `ktcs simulate`
+ * does, and checks each run's report.
+ */
+private suspend fun forRandomRuns(
+    lanes: List<Pair<Int, Lane>>,
+    seed: Long,
+    iterations: Int,
+    check: SimulationReport.(orders: Int) -> Unit,
+) {
+    checkAll(PropTestConfig(seed = seed, iterations = iterations), plants(lanes), Arb.int(4..10), Arb.long()) {
+            plant,
+            orders,
+            orderSeed,
+        ->
+        val config = ConfigLoader().load(null, emptyMap(), emptyList())
+        val report = SimulationRunner(plant.build(), config, listOf(stepVehicles), orders, orderSeed).run()
+        withClue("$plant, $orders orders, seed $orderSeed:\n${report.lines().joinToString("\n")}") {
+            report.check(orders)
+        }
+    }
+}
+
+/**
+ * Random small plants and order streams in virtual time (the kernel's code and timing, test vehicles at 1 m/s). Each
+ * run simulates until every order is final or an hour passes without progress.
+ */
+class TrafficPropertyTest : FunSpec({
+    context("nothing is held twice, and the fleet never stops without the watchdog reporting why") {
+        val kinds = listOf("one-way lanes" to oneWay, "one-way and two-way lanes" to mixed)
+        withData(nameFn = { it.first }, kinds) { (_, lanes) ->
+            forRandomRuns(lanes, seed = 1_111, iterations = 25) { orders ->
+                doubleAllocations shouldBe 0
+                sharedPositions shouldBe 0
+                val done = ordersFinished + ordersUnroutable == orders
+                (done || deadlocksDetected > 0) shouldBe true
+            }
+        }
+    }
+
+    // The target of issue #11, not met yet: with the look-ahead rule, 32 of 60 random one-way plants (seed 77) and 15
+    // of 60 mixed ones finish cleanly; the rest reach a state where the watchdog reports a deadlock (README, "Traffic
+    // control: figures"). Enable it when the rule is complete.
+    test("every order finishes or is unroutable, and the watchdog never fires").config(enabled = false) {
+        forRandomRuns(mixed, seed = 2_222, iterations = 40) { orders ->
+            ordersFinished + ordersUnroutable shouldBe orders
+            deadlocksDetected shouldBe 0
+        }
+    }
+})
