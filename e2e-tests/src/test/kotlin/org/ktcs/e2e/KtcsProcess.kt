@@ -40,6 +40,9 @@ class KtcsProcess(vararg args: String, workingDirectory: Path = RepositoryRoot.p
         error("no line containing '$text' within $timeout; output so far:\n${output()}")
     }
 
+    /** The process id (the JVM's: the launcher replaces itself with it). */
+    val pid: Long get() = process.pid()
+
     /** Sends SIGTERM and returns the exit code. */
     fun terminate(): Int {
         process.destroy()

@@ -5,12 +5,14 @@ import io.kotest.matchers.collections.shouldContainAll
 import io.kotest.matchers.collections.shouldHaveSize
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
+import io.kotest.matchers.string.shouldNotContain
 import io.kotest.matchers.string.shouldStartWith
 import java.net.URI
 import java.net.http.HttpClient
 import java.net.http.HttpRequest
 import java.net.http.HttpResponse
 import java.nio.file.Files
+import java.nio.file.Path
 import kotlin.time.Duration.Companion.seconds
 
 /** `./ktcs` as the README tells a user to run it. */
@@ -56,6 +58,20 @@ class LauncherTest : FunSpec({
             delete(null) shouldBe 403
             delete("stop-it") shouldBe 200
             ktcs.awaitExit() shouldBe 0
+        }
+    }
+
+    // Building an example (with -am) rewrites kernel/target/ktcs-kernel.jar; a kTCS running from it would break.
+    test("runs from a copy of the build, so that a build while it runs leaves its jars alone").config(
+        enabled = Files.isDirectory(Path.of("/proc/self")),
+    ) {
+        KtcsProcess(*local).use { ktcs ->
+            ktcs.awaitLine("kTCS ready")
+            val command = Files.readString(Path.of("/proc/${ktcs.pid}/cmdline")).replace('\u0000', ' ')
+
+            command shouldContain "${RepositoryRoot.path}/target/run/"
+            command shouldNotContain "kernel/target/ktcs-kernel.jar"
+            ktcs.terminate() shouldBe 0
         }
     }
 

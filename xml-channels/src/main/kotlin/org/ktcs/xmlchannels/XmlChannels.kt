@@ -46,8 +46,8 @@ class XmlChannels(
     var statusPort: Int = -1
         private set
 
-    /** Status channel clients connected now; for tests and monitoring. */
-    val statusClients get() = statusChannel.clientCount
+    /** Status channel clients connected now (for tests). */
+    internal val statusClients get() = statusChannel.clientCount
 
     /** Listens on both ports; if either can't be bound, nothing stays open. */
     fun start(): XmlChannels = apply {

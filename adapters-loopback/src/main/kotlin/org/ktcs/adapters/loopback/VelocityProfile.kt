@@ -34,16 +34,6 @@ object VelocityProfile {
         return Motion(startVelocity, phases.filter { it.durationSeconds > 0.0 })
     }
 
-    /** The seconds [plan] needs for the same arguments. */
-    fun travelTimeSeconds(
-        length: Double,
-        startVelocity: Double,
-        maxVelocity: Double,
-        acceleration: Double,
-        deceleration: Double,
-        stopAtEnd: Boolean,
-    ): Double = plan(length, startVelocity, maxVelocity, acceleration, deceleration, stopAtEnd).durationSeconds
-
     private class Ramps(val acceleration: Double, val deceleration: Double) {
         fun stopping(length: Double, v0: Double, vMax: Double): List<Phase> {
             val rampsLength = distance(v0, vMax) + distance(vMax, 0.0)

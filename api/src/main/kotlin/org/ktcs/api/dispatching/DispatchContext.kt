@@ -49,7 +49,7 @@ public interface DispatchContext {
     public fun createTransportOrder(creation: TransportOrderCreation): TransportOrder
 
     /** Notes in the order's history why it was not assigned yet (shown to operators; repeated reasons are merged). */
-    public fun deferred(order: String, reason: String)
+    public fun orderWaiting(order: String, reason: String)
 
     /**
      * Notes why [vehicle], idle, took no order in this run (`null`: it took one, or no order waits), as

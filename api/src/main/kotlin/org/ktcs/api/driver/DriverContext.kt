@@ -9,8 +9,9 @@ import org.ktcs.api.model.Vehicle
 import org.ktcs.api.model.VehicleState
 
 /**
- * What a driver can see of the kernel and how it reports its vehicle. The report methods may be called from any
- * thread: the kernel applies them in its own context, in the order they were made.
+ * What a driver can see of the kernel and how it reports its vehicle. Every method may be called from any thread:
+ * the reads return immutable values the kernel publishes, and the kernel applies the reports in its own context, in
+ * the order they were made.
  */
 public interface DriverContext {
     /** The kernel's clock; simulated drivers schedule their work on it so they follow virtual time too. */

@@ -21,8 +21,7 @@ class ExtensionsTakeEffectTest : FunSpec({
         val model = demo.copy(
             vehicles = demo.vehicles.map {
                 it.copy(
-                    properties =
-                    it.properties + ("tcs:preferredAdapterClass" to "teleport"),
+                    properties = it.properties + ("tcs:preferredAdapterClass" to "teleport"),
                 )
             },
         )

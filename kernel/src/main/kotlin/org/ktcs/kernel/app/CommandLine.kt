@@ -181,8 +181,7 @@ object CommandLine {
                 "--orders" -> options.copy(orders = positive(name, value()))
 
                 "--seed" -> options.copy(
-                    seed =
-                    value().toLongOrNull() ?: throw UsageException("--seed expects a whole number"),
+                    seed = value().toLongOrNull() ?: throw UsageException("--seed expects a whole number"),
                 )
 
                 "--virtual-time" -> options.copy(realTime = false)
@@ -263,8 +262,7 @@ object CommandLine {
                 "--set" -> options.copy(settings = options.settings + value())
 
                 "--seed" -> options.copy(
-                    seed =
-                    value().toLongOrNull() ?: throw UsageException("--seed expects a whole number"),
+                    seed = value().toLongOrNull() ?: throw UsageException("--seed expects a whole number"),
                 )
 
                 "--cpu-batches" -> options.copy(cpuBatches = value().split(',').map { positive(name, it.trim()) })
@@ -284,14 +282,10 @@ object CommandLine {
                 else -> throw UsageException("unknown bench option '$name' (ktcs bench --help lists them)")
             }
         }
-        if (options.model != null &&
-            options.grid != null
-        ) {
+        if (options.model != null && options.grid != null) {
             throw UsageException("give either --model or --grid, not both")
         }
-        if (options.url != null &&
-            options.grid != null
-        ) {
+        if (options.url != null && options.grid != null) {
             throw UsageException("--grid builds a plant for a kTCS the bench starts; not with --url")
         }
         return options
@@ -305,9 +299,7 @@ object CommandLine {
     private fun parseSize(text: String, what: String): Pair<Int, Int> {
         val parts = text.lowercase().split('x')
         val size = parts.mapNotNull { it.toIntOrNull() }
-        if (parts.size != 2 || size.size != 2 ||
-            size.any { it < 3 }
-        ) {
+        if (parts.size != 2 || size.size != 2 || size.any { it < 3 }) {
             throw UsageException("$what expects WIDTHxHEIGHT with both at least 3, e.g. 40x40, got '$text'")
         }
         return size[0] to size[1]

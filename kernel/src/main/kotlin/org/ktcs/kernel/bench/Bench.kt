@@ -25,9 +25,7 @@ class Bench(private val options: BenchOptions, private val out: PrintStream, pri
             }
             ?: PlantModelLoader.load(options.model).model
         // A started kTCS gets the fleet asked for, each vehicle on a point of its own, as `ktcs simulate` places them.
-        val model = if (options.url ==
-            null
-        ) {
+        val model = if (options.url == null) {
             Fleet.withVehicles(loaded, options.vehicles ?: loaded.vehicles.size.coerceAtLeast(1))
         } else {
             loaded

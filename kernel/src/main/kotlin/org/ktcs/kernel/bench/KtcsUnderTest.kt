@@ -29,9 +29,7 @@ class KtcsUnderTest private constructor(
     fun awaitReady(timeoutSeconds: Long): Double {
         val deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(timeoutSeconds)
         while (System.nanoTime() < deadline) {
-            if (process != null &&
-                !process.isAlive
-            ) {
+            if (process != null && !process.isAlive) {
                 error("kTCS exited with code ${process.exitValue()} before it was ready")
             }
             // Connecting to a local port nobody listens on yet can make the kernel hand the client that very port as

@@ -1,6 +1,9 @@
 package org.ktcs.kernel.context
 
 import org.ktcs.api.kernel.KernelClock
+import kotlin.coroutines.Continuation
+import kotlin.coroutines.EmptyCoroutineContext
+import kotlin.coroutines.startCoroutine
 
 /**
  * The one context in which all kernel state changes: tasks run one at a time, in the order they are due. Code
@@ -17,6 +20,22 @@ interface KernelContext : KernelClock, AutoCloseable {
     /** Runs [block] in the kernel context and returns its result (or throws its exception) to the caller. */
     suspend fun <T> call(block: () -> T): T
 
+    /**
+     * Runs [block] in the kernel context as one task, so that no other kernel task runs in between, and returns its
+     * result. Kernel services answer at once in the kernel context, so a block that only calls them never suspends;
+     * one that does suspend (waiting for another thread) would hold the kernel up and fails with
+     * [IllegalStateException] instead. The kernel thread never blocks on it.
+     */
+    suspend fun <T> callAtomically(block: suspend () -> T): T = call { completedWithoutSuspending(block) }
+
     /** Whether the calling code runs in the kernel context. */
     fun isInKernelContext(): Boolean
+}
+
+private fun <T> completedWithoutSuspending(block: suspend () -> T): T {
+    var outcome: Result<T>? = null
+    block.startCoroutine(Continuation(EmptyCoroutineContext) { outcome = it })
+    return checkNotNull(outcome) {
+        "a kernel-context block suspended; it may only call kernel services, which answer at once there"
+    }.getOrThrow()
 }

@@ -75,8 +75,8 @@ class VirtualTimeKernelContext(private val start: Instant = Instant.parse("2026-
         runUntil { false }
     }
 
-    /** How many tasks wait. */
-    fun pendingTasks(): Int = synchronized(lock) { queue.count { !it.cancelled } }
+    /** How many tasks wait (for tests). */
+    internal fun pendingTasks(): Int = synchronized(lock) { queue.count { !it.cancelled } }
 
     override fun close() {
         synchronized(lock) { queue.clear() }

@@ -1,16 +1,14 @@
 package org.ktcs.kernel.core
 
 import org.ktcs.api.event.NotificationLevel
-import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.model.Point
 import org.ktcs.api.model.PointType
-import org.ktcs.api.model.ProcState
 import org.ktcs.api.model.Vehicle
-import org.ktcs.api.model.VehicleState
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.Operations
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.kernel.dispatching.PARK_ORDER_TYPE
+import org.ktcs.kernel.dispatching.VehicleAvailability
 import org.ktcs.kernel.scheduling.WaitForGraph
 import org.slf4j.LoggerFactory
 
@@ -27,6 +25,7 @@ class IdleBlockers(private val kernel: KernelCore) {
     private val log = LoggerFactory.getLogger(IdleBlockers::class.java)
     private var blockingBefore = emptySet<String>()
     private val ordersSent = HashMap<String, String>()
+    private val availability = VehicleAvailability(kernel.orders::get, kernel.sequences::get)
 
     /** How many vehicles were sent out of the way so far. */
     var moved = 0
@@ -44,14 +43,7 @@ class IdleBlockers(private val kernel: KernelCore) {
 
     private fun isIdle(name: String): Boolean {
         val vehicle = kernel.plant.vehicleOrNull(name) ?: return false
-        return vehicle.transportOrder == null &&
-            vehicle.orderSequence == null &&
-            vehicle.procState == ProcState.IDLE &&
-            vehicle.state in MOVABLE_STATES &&
-            vehicle.allowedOrderTypes.any { it == Vehicle.ANY_ORDER_TYPE || it == PARK_ORDER_TYPE } &&
-            vehicle.integrationLevel == IntegrationLevel.TO_BE_UTILIZED &&
-            !vehicle.paused &&
-            vehicle.currentPosition != null
+        return vehicle.orderSequence == null && availability.isAvailable(vehicle, PARKING)
     }
 
     // An order sent earlier that the vehicle has not taken yet (e.g. it is still charging) is not sent twice.
@@ -92,7 +84,7 @@ class IdleBlockers(private val kernel: KernelCore) {
             other.allocatedResources.forEach(taken::addAll)
             other.claimedResources.forEach(taken::addAll)
         }
-        val model = kernel.plant.topology()
+        val model = kernel.plant.layoutWithLocks()
         val linked = model.locations.flatMapTo(HashSet()) { location -> location.links.map { it.point } }
         val costs = kernel.router.costsFrom(vehicle, vehicle.currentPosition!!)
         return model.points.asSequence()
@@ -107,7 +99,7 @@ class IdleBlockers(private val kernel: KernelCore) {
     }
 
     private companion object {
-        val MOVABLE_STATES = setOf(VehicleState.IDLE, VehicleState.CHARGING)
+        val PARKING = VehicleAvailability.Work(orderType = PARK_ORDER_TYPE, mayReplaceDispensable = false)
     }
 
     private fun kindRank(point: Point, linked: Set<String>): Int = when {

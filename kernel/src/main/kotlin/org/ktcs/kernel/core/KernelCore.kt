@@ -92,7 +92,7 @@ class KernelCore(
     /** Starts the strategies, the vehicles and the periodic tasks; call in the kernel context. */
     fun start() {
         router.initialize()
-        router.updateTopology(plant.topology())
+        router.updateTopology(plant.layoutWithLocks())
         scheduler.initialize()
         recoveryEvaluator.initialize()
         dispatcherProvider().initialize()
@@ -123,7 +123,7 @@ class KernelCore(
         orders.contains(name) || sequences.get(name) != null || plant.staticModel().objectNamed(name) != null
 
     fun createTransportOrder(creation: TransportOrderCreation): TransportOrder {
-        val order = factory.create(creation, plant.topology(), ::nameTaken, orders::contains, sequences::get)
+        val order = factory.create(creation, plant.layoutWithLocks(), ::nameTaken, orders::contains, sequences::get)
         orders.add(order)
         return orders.require(order.name)
     }
@@ -155,28 +155,24 @@ class KernelCore(
             } else {
                 it.copy(
                     complete = true,
-                    history =
-                    it.history + HistoryEntry(context.now(), HistoryCodes.SEQUENCE_COMPLETED),
+                    history = it.history + HistoryEntry(context.now(), HistoryCodes.SEQUENCE_COMPLETED),
                 )
             }
         }
-        lifecycle.onSequenceCompleted(name)
+        lifecycle.onSequenceCompleted(name, context.now())
     }
 
     /** Gives the DISPATCHABLE [order] to the idle [vehicle] with routed [driveOrders]. */
     fun assign(order: String, vehicle: String, driveOrders: List<DriveOrder>) {
         val current = orders.require(order)
-        if (current.state !=
-            TransportOrderState.DISPATCHABLE
-        ) {
+        if (current.state != TransportOrderState.DISPATCHABLE) {
             throw IllegalStateChangeException("transport order '$order' is ${current.state}, not DISPATCHABLE")
         }
         orders.update(order) {
             it.copy(
                 processingVehicle = vehicle,
                 driveOrders = driveOrders,
-                history =
-                it.history + HistoryEntry(context.now(), HistoryCodes.ORDER_ASSIGNED, vehicle),
+                history = it.history + HistoryEntry(context.now(), HistoryCodes.ORDER_ASSIGNED, vehicle),
             )
         }
         orders.transition(order, TransportOrderState.BEING_PROCESSED)
@@ -213,7 +209,7 @@ class KernelCore(
      */
     fun setPathLocked(path: String, locked: Boolean) {
         plant.setPathLocked(path, locked)
-        router.updateTopology(plant.topology())
+        router.updateTopology(plant.layoutWithLocks())
         if (locked) {
             plant.vehicles().filter { vehicle -> vehicle.claimedResources.any { path in it } }.forEach { vehicle ->
                 if (!controllers.controller(vehicle.name).reroute(emptySet())) {
@@ -245,8 +241,8 @@ class KernelCore(
         sequences.removeFinished()
         dispatchable.clear()
         plant.replace(model)
-        router.updateTopology(plant.topology())
-        scheduler.updatePlantModel(plant.topology())
+        router.updateTopology(plant.layoutWithLocks())
+        scheduler.updatePlantModel(plant.layoutWithLocks())
         controllers.start(options.enableDriversOnStart, options.initialIntegrationLevel)
         announceTrafficLimits()
         trigger.request()
@@ -254,7 +250,7 @@ class KernelCore(
 
     // Where the plant itself defeats deadlock avoidance (dead ends with several stops), operators hear it at once.
     private fun announceTrafficLimits() {
-        PlantModelValidator.trafficWarnings(plant.topology()).forEach {
+        PlantModelValidator.trafficWarnings(plant.layoutWithLocks()).forEach {
             notifications.publish("traffic control", NotificationLevel.IMPORTANT, "${it.element}: ${it.message}")
         }
     }
@@ -292,9 +288,7 @@ class KernelCore(
         val order = event.current
         if (order == null || order.state != TransportOrderState.DISPATCHABLE) {
             (order ?: event.previous)?.let { dispatchable.remove(it.name) }
-            if (order != null && order.state.isFinal &&
-                order.processingVehicle != null
-            ) {
+            if (order != null && order.state.isFinal && order.processingVehicle != null) {
                 dispatchContext.onVehicleFree(order.processingVehicle!!)
             }
             return

@@ -27,7 +27,7 @@ class KernelDispatchContext(private val kernel: KernelCore) : DispatchContext {
 
     override val router: Router get() = kernel.router
 
-    override fun plantModel(): PlantModel = kernel.plant.topology()
+    override fun plantModel(): PlantModel = kernel.plant.layoutWithLocks()
 
     override fun vehicles(): Collection<Vehicle> = kernel.plant.vehicles()
 
@@ -78,17 +78,14 @@ class KernelDispatchContext(private val kernel: KernelCore) : DispatchContext {
         kernel.plant.updateVehicle(vehicle) { it.copy(waitingReason = reason) }
     }
 
-    override fun deferred(order: String, reason: String) {
+    override fun orderWaiting(order: String, reason: String) {
         kernel.orders.update(order) { current ->
             val last = current.history.lastOrNull { it.eventCode == HistoryCodes.ORDER_DISPATCHING_DEFERRED }
             if (last?.supplement == reason) {
                 current
             } else {
-                current.copy(
-                    history =
-                    current.history +
-                        HistoryEntry(kernel.context.now(), HistoryCodes.ORDER_DISPATCHING_DEFERRED, reason),
-                )
+                val entry = HistoryEntry(kernel.context.now(), HistoryCodes.ORDER_DISPATCHING_DEFERRED, reason)
+                current.copy(history = current.history + entry)
             }
         }
     }

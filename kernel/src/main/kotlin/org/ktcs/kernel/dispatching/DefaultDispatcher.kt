@@ -27,7 +27,7 @@ class DefaultDispatcher(
 
     override fun dispatch() {
         val run = DispatchRun(context, configuration, recovery)
-        val availability = VehicleAvailability(run)
+        val availability = VehicleAvailability.of(run)
         val checks = CandidateChecks(run, availability)
         SequenceSuccessors(run, availability, checks, deferrals).assign()
         FreeOrderAssignment(run, availability, checks, deferrals).assign()

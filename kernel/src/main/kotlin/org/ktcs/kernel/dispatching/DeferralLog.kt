@@ -10,7 +10,7 @@ internal class DeferralLog(private val context: DispatchContext) {
     private val lastReasons = HashMap<String, String>()
 
     fun record(order: String, reason: String) {
-        if (lastReasons.put(order, reason) != reason) context.deferred(order, reason)
+        if (lastReasons.put(order, reason) != reason) context.orderWaiting(order, reason)
     }
 
     fun assigned(order: String) {

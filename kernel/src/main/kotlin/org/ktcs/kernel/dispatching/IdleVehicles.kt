@@ -1,6 +1,5 @@
 package org.ktcs.kernel.dispatching
 
-import org.ktcs.api.model.ProcState
 import org.ktcs.api.model.Vehicle
 import org.ktcs.api.model.VehicleState
 
@@ -20,11 +19,10 @@ internal class IdleVehicles(private val run: DispatchRun, private val availabili
         .filter { isIdle(it) && run.idleMillis(it) >= delayMillis && it.accepts(type) }
         .sortedBy { it.name }
 
-    private fun isIdle(vehicle: Vehicle): Boolean = vehicle.procState == ProcState.IDLE &&
-        vehicle.state == VehicleState.IDLE &&
-        vehicle.transportOrder == null &&
+    // Charging vehicles are left alone: they are where they should be.
+    private fun isIdle(vehicle: Vehicle): Boolean = vehicle.state == VehicleState.IDLE &&
         vehicle.orderSequence == null &&
         vehicle.name !in awaitedByDispensable &&
         !run.isAssigned(vehicle) &&
-        availability.isAvailable(vehicle)
+        availability.isAvailable(vehicle, VehicleAvailability.Work(mayReplaceDispensable = false))
 }

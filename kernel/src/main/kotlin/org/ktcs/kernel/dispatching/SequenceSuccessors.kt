@@ -1,6 +1,5 @@
 package org.ktcs.kernel.dispatching
 
-import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.model.Vehicle
 import org.ktcs.api.order.OrderSequence
 import org.ktcs.api.order.TransportOrder
@@ -20,11 +19,8 @@ internal class SequenceSuccessors(
         run.vehicles.filter(::isReady).forEach(::assignSuccessor)
     }
 
-    private fun isReady(vehicle: Vehicle): Boolean = vehicle.orderSequence != null &&
-        vehicle.integrationLevel == IntegrationLevel.TO_BE_UTILIZED &&
-        vehicle.currentPosition != null &&
-        !vehicle.paused &&
-        (availability.isIdle(vehicle) || availability.dispensableOrder(vehicle) != null)
+    private fun isReady(vehicle: Vehicle): Boolean = vehicle.orderSequence
+        ?.let { availability.isAvailable(vehicle, VehicleAvailability.Work(sequence = it)) } == true
 
     private fun assignSuccessor(vehicle: Vehicle) {
         val sequence = vehicle.orderSequence?.let(run::sequence) ?: return

@@ -37,20 +37,34 @@ class EventBus {
     /**
      * Publishes [event]. An event published by a listener while another is being delivered waits until that one
      * has reached everybody, so every listener and subscriber sees all events in the same order.
+     *
+     * A listener that throws does not stop delivery: the other listeners and the subscribers still get this event
+     * and the ones queued behind it, in order; then the first failure is thrown to the publisher (later ones are
+     * attached to it as suppressed), since a failing kernel listener is a defect that must not go unnoticed.
      */
     fun publish(event: KernelEvent) {
         pending.addLast(event)
         if (delivering) return
         delivering = true
+        var failure: Throwable? = null
         try {
-            while (pending.isNotEmpty()) deliver(pending.removeFirst())
+            while (pending.isNotEmpty()) {
+                deliver(pending.removeFirst()) { error -> failure?.addSuppressed(error) ?: run { failure = error } }
+            }
         } finally {
             delivering = false
         }
+        failure?.let { throw it }
     }
 
-    private fun deliver(event: KernelEvent) {
-        listeners.forEach { it(event) }
+    private fun deliver(event: KernelEvent, onFailure: (Throwable) -> Unit) {
+        listeners.forEach { listener ->
+            try {
+                listener(event)
+            } catch (error: Exception) {
+                onFailure(error)
+            }
+        }
         subscribers.forEach { channel ->
             val sent = channel.trySend(event)
             if (sent.isFailure && !sent.isClosed) {

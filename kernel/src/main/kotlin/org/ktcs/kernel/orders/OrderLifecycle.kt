@@ -16,6 +16,7 @@ import org.ktcs.api.routing.Router
 import org.ktcs.kernel.workingset.HistoryCodes
 import org.ktcs.kernel.workingset.OrderSequencePool
 import org.ktcs.kernel.workingset.TransportOrderPool
+import java.time.Instant
 
 /**
  * The kernel's side of the order life cycle, reacting to order events: a new order is checked (RAW → ACTIVE or
@@ -94,20 +95,21 @@ class OrderLifecycle(
     private fun failUnfinished(name: String) {
         val order = orders.get(name) ?: return
         if (order.state.isFinal) return
-        if (order.state !=
-            WITHDRAWN
-        ) {
+        if (order.state != WITHDRAWN) {
             orders.transition(name, WITHDRAWN, "an earlier order of its failure-fatal sequence failed")
         }
         orders.transition(name, FAILED, "an earlier order of its failure-fatal sequence failed")
     }
 
-    /** Called when a sequence is marked complete: it may be finished already. */
-    fun onSequenceCompleted(name: String) {
+    /**
+     * Called when a sequence is marked complete at [now]: it may be finished already, and then it finishes [now]
+     * (as in openTCS), so that the sweep removes it in time.
+     */
+    fun onSequenceCompleted(name: String, now: Instant) {
         sequences.update(name) { current ->
             val allFinal = current.orders.all { orders.get(it)?.state?.isFinal ?: true }
             if (allFinal && !current.finished) {
-                current.copy(finished = true, finishedTime = null, finishedIndex = current.orders.lastIndex)
+                current.copy(finished = true, finishedTime = now, finishedIndex = current.orders.lastIndex)
             } else {
                 current
             }

@@ -40,9 +40,7 @@ class TransportOrderFactory(private val clock: KernelClock, private val names: O
         }
         creation.destinations.forEachIndexed { index, destination -> checkDestination(name, index, destination, model) }
         creation.intendedVehicle?.let {
-            if (model.vehicle(it) ==
-                null
-            ) {
+            if (model.vehicle(it) == null) {
                 throw ObjectUnknownException("transport order '$name': unknown intended vehicle '$it'")
             }
         }

@@ -2,13 +2,14 @@ package org.ktcs.kernel.services
 
 import org.ktcs.api.error.IllegalStateChangeException
 import org.ktcs.api.model.IntegrationLevel
-import org.ktcs.api.model.ProcState
-import org.ktcs.api.model.VehicleState
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.api.service.DispatcherService
 import org.ktcs.kernel.core.KernelCore
+import org.ktcs.kernel.dispatching.VehicleAvailability
 
 class StandardDispatcherService(private val kernel: KernelCore) : DispatcherService {
+    private val availability = VehicleAvailability(kernel.orders::get, kernel.sequences::get)
+
     override suspend fun dispatch() = kernel.context.call { kernel.dispatch() }
 
     override suspend fun withdrawByTransportOrder(order: String, immediate: Boolean, disableVehicle: Boolean) =
@@ -38,21 +39,13 @@ class StandardDispatcherService(private val kernel: KernelCore) : DispatcherServ
             throw IllegalStateChangeException("transport order '$order' belongs to a sequence")
         }
         val vehicle = kernel.plant.vehicle(vehicleName)
-        val refusal = when {
-            vehicle.integrationLevel != IntegrationLevel.TO_BE_UTILIZED ->
-                "its integration level is ${vehicle.integrationLevel}"
-
-            vehicle.procState != ProcState.IDLE -> "it is ${vehicle.procState}"
-
-            vehicle.state != VehicleState.IDLE && vehicle.state != VehicleState.CHARGING -> "it is ${vehicle.state}"
-
-            vehicle.currentPosition == null -> "its position is unknown"
-
-            vehicle.orderSequence != null -> "it is bound to order sequence '${vehicle.orderSequence}'"
-
-            else -> null
+        val work = VehicleAvailability.Work(orderType = current.type, mayReplaceDispensable = false)
+        val refusals = availability.reasons(vehicle, work)
+        if (refusals.isNotEmpty()) {
+            throw IllegalStateChangeException(
+                "cannot assign '$order' to vehicle '$vehicleName' now: ${refusals.joinToString(", ")}",
+            )
         }
-        refusal?.let { throw IllegalStateChangeException("cannot assign '$order' to vehicle '$vehicleName' now: $it") }
         val driveOrders = kernel.router.routeOrder(vehicle, vehicle.currentPosition!!, current)
             ?: throw IllegalStateChangeException("no route for vehicle '$vehicleName' to carry out '$order'")
         kernel.assign(order, vehicleName, driveOrders)

@@ -4,7 +4,6 @@ import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.consumeAsFlow
 import kotlinx.coroutines.flow.emitAll
 import kotlinx.coroutines.flow.flow
-import kotlinx.coroutines.runBlocking
 import org.ktcs.api.event.KernelEvent
 import org.ktcs.api.event.UserNotification
 import org.ktcs.api.order.Route
@@ -57,11 +56,12 @@ class StandardKernelServices(private val kernel: KernelCore) : KernelServices {
 
     override fun events(): Flow<KernelEvent> = flow { emitAll(kernel.events.subscribe().consumeAsFlow()) }
 
-    override suspend fun <T> eventsAfter(snapshot: suspend () -> T): Pair<T, Flow<KernelEvent>> = kernel.context.call {
+    override suspend fun <T> eventsAfter(
+        snapshot: suspend () -> T,
+    ): Pair<T, Flow<KernelEvent>> = kernel.context.callAtomically {
         val subscription = kernel.events.subscribe()
-        // In the kernel context the services answer at once, so this finishes before any other kernel task runs.
         val taken = try {
-            runBlocking { snapshot() }
+            snapshot()
         } catch (error: Throwable) {
             subscription.cancel()
             throw error

@@ -21,6 +21,6 @@ class StandardPlantModelService(private val kernel: KernelCore) : PlantModelServ
     }
 
     override suspend fun updateRoutingTopology() = kernel.context.call {
-        kernel.router.updateTopology(kernel.plant.topology())
+        kernel.router.updateTopology(kernel.plant.layoutWithLocks())
     }
 }

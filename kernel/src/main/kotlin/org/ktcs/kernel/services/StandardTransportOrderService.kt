@@ -22,9 +22,7 @@ class StandardTransportOrderService(private val kernel: KernelCore) : TransportO
 
     override suspend fun setIntendedVehicle(order: String, vehicle: String?) = kernel.context.call {
         val current = kernel.orders.require(order)
-        if (current.state !in
-            OrderLifecycle.UNASSIGNED
-        ) {
+        if (current.state !in OrderLifecycle.UNASSIGNED) {
             throw IllegalStateChangeException(
                 "transport order '$order' is ${current.state}; its intended vehicle can only change before it is assigned",
             )

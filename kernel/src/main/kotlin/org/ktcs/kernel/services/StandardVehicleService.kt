@@ -42,9 +42,7 @@ class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
                 "energy thresholds of vehicle '$vehicle' must be between 0 and 100: $thresholds",
             )
         }
-        if (thresholds.critical >
-            thresholds.good
-        ) {
+        if (thresholds.critical > thresholds.good) {
             throw InvalidRequestException(
                 "vehicle '$vehicle': critical ${thresholds.critical} is above good ${thresholds.good}",
             )

@@ -5,7 +5,6 @@ import org.ktcs.api.event.KernelEvent
 import org.ktcs.api.event.TransportOrderEvent
 import org.ktcs.api.event.VehicleEvent
 import org.ktcs.api.model.PlantModel
-import org.ktcs.api.model.ProcState
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
@@ -14,6 +13,7 @@ import org.ktcs.kernel.config.KtcsConfig
 import org.ktcs.kernel.config.KtcsSettings
 import org.ktcs.kernel.context.RealTimeKernelContext
 import org.ktcs.kernel.context.VirtualTimeKernelContext
+import org.ktcs.kernel.dispatching.VehicleAvailability
 import org.ktcs.kernel.extension.KtcsExtension
 import org.ktcs.kernel.routerConfiguration
 import org.ktcs.kernel.routing.DefaultRouter
@@ -168,13 +168,14 @@ class SimulationRunner(
 private class AssignLatencies(private val kernel: SimulationKernel) {
     private val dispatchable = HashMap<String, Long>()
     private val idleSince = HashMap<String, Long>()
+    private val availability = VehicleAvailability(kernel.core.orders::get, kernel.core.sequences::get)
     val millis = ArrayList<Double>()
 
     fun onEvent(event: KernelEvent) {
         val now = kernel.clock.elapsedMillis()
         if (event is VehicleEvent) {
             val vehicle = event.current ?: return
-            val idle = vehicle.procState == ProcState.IDLE && vehicle.transportOrder == null
+            val idle = availability.isAvailable(vehicle)
             if (idle && vehicle.name !in idleSince) idleSince[vehicle.name] = now
             if (!idle) idleSince.remove(vehicle.name)
         }

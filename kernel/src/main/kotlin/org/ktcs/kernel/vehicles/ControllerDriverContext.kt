@@ -2,6 +2,7 @@ package org.ktcs.kernel.vehicles
 
 import org.ktcs.api.driver.DriverContext
 import org.ktcs.api.driver.MovementCommand
+import org.ktcs.api.error.ObjectUnknownException
 import org.ktcs.api.event.DriverEvent
 import org.ktcs.api.event.NotificationLevel
 import org.ktcs.api.kernel.KernelClock
@@ -24,11 +25,13 @@ class ControllerDriverContext(
 
     override val clock: KernelClock get() = env.context
 
-    override val plantModel: PlantModel get() = env.plant.topology()
+    // Drivers call these from their own threads: they read what the plant publishes for any thread.
+    override val plantModel: PlantModel get() = env.plant.layoutWithLocks()
 
-    override fun vehicle(): Vehicle = env.plant.vehicle(vehicleName)
+    override fun vehicle(): Vehicle = env.plant.publishedVehicle(vehicleName)
+        ?: throw ObjectUnknownException("vehicle '$vehicleName' is no longer in the plant model")
 
-    override fun vehiclePositions(): Map<String, String> = env.plant.vehicles()
+    override fun vehiclePositions(): Map<String, String> = env.plant.publishedVehicles()
         .mapNotNull { vehicle -> vehicle.currentPosition?.let { vehicle.name to it } }.toMap()
 
     override fun reportPosition(point: String?) = later {
@@ -73,12 +76,12 @@ class ControllerDriverContext(
     override fun commandFailed(command: MovementCommand) = later { controller.onCommandFailed(command) }
 
     override fun setVehicleProperty(key: String, value: String?) = later {
-        env.plant.updateVehicle(vehicleName) { it.copy(properties = it.properties.with(key, value)) }
+        env.plant.updateVehicle(vehicleName) { it.copy(properties = it.properties.setOrRemove(key, value)) }
     }
 
     override fun setTransportOrderProperty(key: String, value: String?) = later {
         controller.transportOrder?.let { order ->
-            env.orders.update(order) { it.copy(properties = it.properties.with(key, value)) }
+            env.orders.update(order) { it.copy(properties = it.properties.setOrRemove(key, value)) }
         }
     }
 
@@ -103,11 +106,7 @@ class ControllerDriverContext(
         env.context.execute { if (!retired) action() }
     }
 
-    private fun Map<String, String>.with(key: String, value: String?): Map<String, String> = if (value ==
-        null
-    ) {
-        this - key
-    } else {
-        this + (key to value)
-    }
+    /** A copy with [key] set to [value], or without [key] if [value] is null (how drivers remove a property). */
+    private fun Map<String, String>.setOrRemove(key: String, value: String?): Map<String, String> =
+        if (value == null) this - key else this + (key to value)
 }

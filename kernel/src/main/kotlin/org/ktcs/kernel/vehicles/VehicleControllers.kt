@@ -87,9 +87,7 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
                     it.name
                 }.ifEmpty { "none" }}",
             )
-        if (controller.transportOrder !=
-            null
-        ) {
+        if (controller.transportOrder != null) {
             throw IllegalStateChangeException(
                 "vehicle '$vehicle' is processing order '${controller.transportOrder}'",
             )

@@ -1,6 +1,5 @@
 package org.ktcs.kernel.web
 
-import io.ktor.http.HttpStatusCode
 import io.ktor.serialization.kotlinx.json.json
 import io.ktor.server.application.Application
 import io.ktor.server.application.ApplicationStopPreparing
@@ -31,6 +30,7 @@ import org.ktcs.kernel.web.plugins.CrossSiteGuard
 import org.ktcs.kernel.web.plugins.RequestSizeLimit
 import org.ktcs.kernel.web.plugins.installErrorResponses
 import org.ktcs.kernel.web.v1.V1Json
+import org.ktcs.kernel.web.v1.dispatcherTrigger
 import org.ktcs.kernel.web.v1.events.StatusEventBuffer
 import org.ktcs.kernel.web.v1.events.eventRoutes
 import org.ktcs.kernel.web.v1.orders.orderSequenceRoutes
@@ -159,10 +159,7 @@ fun Application.webModule(
             plantModelRoutes(services)
             eventRoutes(services, statusEvents)
             webSocketRoutes(services, options.webSocketBufferSize, webSockets)
-            post("/dispatcher/trigger") {
-                services.dispatcher.dispatch()
-                call.respond(HttpStatusCode.OK)
-            }
+            dispatcherTrigger(services)
         }
     }
 }

@@ -22,8 +22,7 @@ class OrderSequencePool(private val events: EventBus, private val clock: KernelC
     fun add(sequence: OrderSequence): OrderSequence {
         if (sequence.name in sequences) throw ObjectExistsException("order sequence '${sequence.name}' exists already")
         val created = sequence.copy(
-            history =
-            sequence.history + HistoryEntry(clock.now(), HistoryCodes.SEQUENCE_CREATED),
+            history = sequence.history + HistoryEntry(clock.now(), HistoryCodes.SEQUENCE_CREATED),
         )
         sequences[created.name] = created
         events.publish(OrderSequenceEvent(null, created))

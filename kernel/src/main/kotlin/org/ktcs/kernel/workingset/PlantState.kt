@@ -10,19 +10,27 @@ import org.ktcs.api.model.Path
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.Vehicle
 import org.ktcs.kernel.events.EventBus
+import java.util.concurrent.ConcurrentHashMap
 
 /**
  * The plant as it is now: the loaded model plus what changed since (path and location locks, the vehicles' runtime
- * state). Every change is published as an event with the previous and current object. Confined to the kernel
- * context; [model] is an immutable snapshot that is rebuilt only when it is asked for after a change.
+ * state). Every change is published as an event with the previous and current object.
+ *
+ * Changes happen in the kernel context only, and most reads too; [model] is an immutable snapshot rebuilt only
+ * when it is asked for after a change. Drivers read from their own threads, so what they read is published for any
+ * thread: [layoutWithLocks] (rebuilt when a lock changes) and [publishedVehicle] / [publishedVehicles] (one
+ * immutable [Vehicle] per name, replaced when it changes).
  */
 class PlantState(initial: PlantModel, private val events: EventBus) {
     private var base = initial
     private val paths = LinkedHashMap<String, Path>()
     private val locations = LinkedHashMap<String, Location>()
     private val vehicles = LinkedHashMap<String, Vehicle>()
+    private val published = ConcurrentHashMap<String, Vehicle>()
     private var snapshot: PlantModel? = null
-    private var topologySnapshot: PlantModel? = null
+
+    @Volatile
+    private var layout: PlantModel = initial
 
     init {
         load(initial)
@@ -36,13 +44,17 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
     ).also { snapshot = it }
 
     /**
-     * The plant with the current path and location locks, but vehicles as loaded. Unlike [model] it changes only
-     * when a lock does, so strategies and drivers can read it on every event without copying the plant each time.
+     * The plant's layout with the current path and location locks; its vehicles are as loaded, not as they are now
+     * (use [model] or [vehicle] for those). Unlike [model] it changes only when a lock does, so strategies and
+     * drivers can read it on every event without copying the plant each time. Safe to read from any thread.
      */
-    fun topology(): PlantModel = topologySnapshot ?: base.copy(
-        paths = paths.values.toList(),
-        locations = locations.values.toList(),
-    ).also { topologySnapshot = it }
+    fun layoutWithLocks(): PlantModel = layout
+
+    /** The vehicle [name] as it is now, or null if there is none; safe to read from any thread. */
+    fun publishedVehicle(name: String): Vehicle? = published[name]
+
+    /** The vehicles as they are now, in no particular order; safe to read from any thread. */
+    fun publishedVehicles(): Collection<Vehicle> = published.values
 
     /** The model as loaded, without runtime changes: points, location types and blocks never change at runtime. */
     fun staticModel(): PlantModel = base
@@ -63,6 +75,7 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
         if (current == previous) return previous
         check(current.name == name) { "a vehicle's name cannot change" }
         vehicles[name] = current
+        published[name] = current
         snapshot = null
         events.publish(VehicleEvent(previous, current))
         return current
@@ -73,8 +86,7 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
         if (previous.locked == locked) return previous
         return previous.copy(locked = locked).also {
             paths[name] = it
-            snapshot = null
-            topologySnapshot = null
+            lockChanged()
             events.publish(PathEvent(previous, it))
         }
     }
@@ -84,8 +96,7 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
         if (previous.locked == locked) return previous
         return previous.copy(locked = locked).also {
             locations[name] = it
-            snapshot = null
-            topologySnapshot = null
+            lockChanged()
             events.publish(LocationEvent(previous, it))
         }
     }
@@ -96,6 +107,11 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
         events.publish(PlantModelReplacedEvent(model))
     }
 
+    private fun lockChanged() {
+        snapshot = null
+        layout = base.copy(paths = paths.values.toList(), locations = locations.values.toList())
+    }
+
     private fun load(model: PlantModel) {
         base = model
         paths.clear()
@@ -104,7 +120,10 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
         model.paths.associateByTo(paths) { it.name }
         model.locations.associateByTo(locations) { it.name }
         model.vehicles.associateByTo(vehicles) { it.name }
+        // Added before stale ones go, so a driver thread never finds its vehicle missing midway.
+        published.putAll(vehicles)
+        published.keys.retainAll(vehicles.keys)
         snapshot = model
-        topologySnapshot = model
+        layout = model
     }
 }

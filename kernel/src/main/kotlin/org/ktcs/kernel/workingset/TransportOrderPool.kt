@@ -42,28 +42,9 @@ class TransportOrderPool(private val events: EventBus, private val clock: Kernel
             throw IllegalStateChangeException("illegal transition ${order.state} -> $to for transport order '$name'")
         }
         val now = clock.now()
-        val history = if (to.isFinal) {
-            listOf(
-                HistoryEntry(
-                    now,
-                    HistoryCodes.ORDER_REACHED_FINAL_STATE,
-                    supplement.ifEmpty {
-                        to.name
-                    },
-                ),
-            )
-        } else {
-            emptyList()
-        }
-        return replace(
-            order,
-            order.copy(
-                state = to,
-                finishedTime = if (to.isFinal) now else null,
-                history =
-                order.history + history,
-            ),
-        )
+        val reachedFinal = HistoryEntry(now, HistoryCodes.ORDER_REACHED_FINAL_STATE, supplement.ifEmpty { to.name })
+        val history = if (to.isFinal) order.history + reachedFinal else order.history
+        return replace(order, order.copy(state = to, finishedTime = if (to.isFinal) now else null, history = history))
     }
 
     /** Changes anything but the state. */

@@ -1,7 +1,12 @@
 package org.ktcs.kernel.context
 
+import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.withContext
+import kotlinx.coroutines.withTimeout
 
 class RealTimeKernelContextTest : FunSpec({
     test("tasks run in order on the kernel thread") {
@@ -11,6 +16,34 @@ class RealTimeKernelContextTest : FunSpec({
         context.schedule(0) { ran += 2 }
         context.call { context.isInKernelContext() } shouldBe true
         context.call { ran.toList() } shouldBe listOf(1, 2)
+        context.close()
+    }
+
+    test("an atomic call runs its service calls in one kernel task without blocking the kernel thread") {
+        val context = RealTimeKernelContext()
+        val ran = mutableListOf<Int>()
+        val result = context.callAtomically {
+            context.execute { ran += 2 }
+            context.call { ran += 1 }
+            context.call { ran.toList() }
+        }
+
+        result shouldBe listOf(1)
+        context.call { ran.toList() } shouldBe listOf(1, 2)
+        context.close()
+    }
+
+    test("an atomic call that waits for another thread fails clearly instead of deadlocking the kernel") {
+        val context = RealTimeKernelContext()
+
+        val error = shouldThrow<IllegalStateException> {
+            withTimeout(5_000) {
+                context.callAtomically { withContext(Dispatchers.Default) { context.call { 1 } } }
+            }
+        }
+
+        error.message shouldContain "suspended"
+        context.call { context.isInKernelContext() } shouldBe true
         context.close()
     }
 

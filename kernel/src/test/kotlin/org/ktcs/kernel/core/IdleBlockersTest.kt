@@ -5,6 +5,7 @@ import io.kotest.matchers.shouldBe
 import org.koin.dsl.bind
 import org.koin.dsl.module
 import org.ktcs.api.driver.VehicleDriverFactory
+import org.ktcs.api.model.AcceptableOrderType
 import org.ktcs.api.model.Path
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.Point
@@ -70,6 +71,21 @@ class IdleBlockersTest : FunSpec({
             val cleared = kernel.core.orders.all().single { it.name.startsWith("Clear-") }
             cleared.processingVehicle shouldBe "Parked"
             cleared.state shouldBe TransportOrderState.FINISHED
+        }
+    }
+
+    // The watchdog once checked only the allowed types: it sent a Clear- order the dispatcher never assigned.
+    test("an idle vehicle that does not accept park orders is not sent an order it would never take") {
+        kernel().use { kernel ->
+            kernel.context.execute {
+                kernel.core.plant.updateVehicle("Parked") {
+                    it.copy(acceptableOrderTypes = setOf(AcceptableOrderType("Transport", 0)))
+                }
+            }
+            kernel.sendWorkerToC()
+
+            kernel.core.watchdog.idleVehiclesMoved shouldBe 0
+            kernel.core.orders.all().filter { it.name.startsWith("Clear-") } shouldBe emptyList()
         }
     }
 

@@ -122,6 +122,34 @@ class KernelOperationsTest : FunSpec({
         }
     }
 
+    test("a sequence marked complete after its last order finished finishes then and is swept in time") {
+        val sweeping = ConfigLoader().load(
+            null,
+            emptyMap(),
+            listOf(
+                "dispatcher.parkIdleVehicles=false",
+                "dispatcher.rechargeIdleVehicles=false",
+                "orderpool.sweepInterval=1000",
+                "orderpool.sweepAge=5000",
+            ),
+        )
+        SimulationKernel(PlantModelLoader.loadDemo().model, sweeping, listOf(drivers)).use { kernel ->
+            kernel.run {
+                createOrderSequence(OrderSequenceCreation("Seq"))
+                createTransportOrder(TransportOrderCreation("S1", longTrip, wrappingSequence = "Seq"))
+            }
+            kernel.context.runUntil { kernel.state("S1").isFinal }
+            kernel.run { markSequenceComplete("Seq") }
+            val completedAt = kernel.context.now()
+
+            val sequence = kernel.core.sequences.require("Seq")
+            sequence.finished shouldBe true
+            sequence.finishedTime shouldBe completedAt
+            kernel.runFor(7_000)
+            kernel.core.sequences.get("Seq") shouldBe null
+        }
+    }
+
     test("orders of a sequence are processed in order by one vehicle") {
         kernel().use { kernel ->
             kernel.run {

@@ -113,7 +113,7 @@ class FakeDispatchContext(var model: PlantModel) : DispatchContext {
         vehicleReasons[vehicle] = reason
     }
 
-    override fun deferred(order: String, reason: String) {
+    override fun orderWaiting(order: String, reason: String) {
         deferrals += order to reason
     }
 }

@@ -67,9 +67,7 @@ class PrioritiesPropertyTest : FunSpec({
                 comparator.compare(a, b).sign shouldBe -comparator.compare(b, a).sign
                 (comparator.compare(a, b) == 0) shouldBe (identity(a) == identity(b))
                 for (c in items) {
-                    if (comparator.compare(a, b) <= 0 &&
-                        comparator.compare(b, c) <= 0
-                    ) {
+                    if (comparator.compare(a, b) <= 0 && comparator.compare(b, c) <= 0) {
                         (comparator.compare(a, c) <= 0) shouldBe true
                     }
                 }
@@ -113,9 +111,7 @@ class PrioritiesPropertyTest : FunSpec({
             val all = candidates(vehicles, orders, costs)
             for (a in all) {
                 for (b in all) {
-                    if (ranking.beforeRouting.compare(a, b) <
-                        0
-                    ) {
+                    if (ranking.beforeRouting.compare(a, b) < 0) {
                         (ranking.full.compare(a, b) < 0) shouldBe true
                     }
                 }

@@ -5,6 +5,7 @@ import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.shouldBe
 import org.ktcs.api.model.AcceptableOrderType
+import org.ktcs.api.model.VehicleState
 import org.ktcs.api.order.OrderSequence
 import org.ktcs.api.order.TransportOrderState
 
@@ -23,6 +24,19 @@ class SequenceSuccessorsTest : FunSpec({
 
         context.dispatch()
 
+        context.assignedOrder("V1") shouldBe "Seq-1"
+    }
+
+    // The successor check once skipped the charging rule that holds every other vehicle until it has recharged.
+    test("a vehicle bound to a sequence that charges gets its next order only when recharged, like any other") {
+        val context = sequenceContext(TransportOrderState.FINISHED, TransportOrderState.DISPATCHABLE)
+        context.vehicles["V1"] = context.vehicles.getValue("V1").copy(state = VehicleState.CHARGING)
+
+        context.dispatch()
+        context.assignments.shouldBeEmpty()
+
+        context.vehicles["V1"] = context.vehicles.getValue("V1").copy(energyLevel = 95)
+        context.dispatch()
         context.assignedOrder("V1") shouldBe "Seq-1"
     }
 

@@ -5,6 +5,7 @@ import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.nulls.shouldBeNull
 import io.kotest.matchers.shouldBe
+import org.ktcs.api.model.AcceptableOrderType
 import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.model.ProcState
 import org.ktcs.api.model.Vehicle
@@ -85,11 +86,39 @@ class VehicleAvailabilityTest : FunSpec({
 
     test("every filter that objects gives its reason, and an available vehicle has none") {
         val context = FakeDispatchContext(plant())
-        val availability = VehicleAvailability(DispatchRun(context, assignOnly, DefaultRecoveryEvaluator()))
+        val availability = VehicleAvailability.of(DispatchRun(context, assignOnly, DefaultRecoveryEvaluator()))
         val unready = vehicle("V1", at = null).copy(paused = true, integrationLevel = IntegrationLevel.TO_BE_RESPECTED)
 
         availability.reasons(unready) shouldContainExactly
             listOf("integration level TO_BE_RESPECTED", "position unknown", "paused")
         availability.reasons(vehicle("V2")).shouldBeEmpty()
+    }
+    context("what the vehicle is asked to take") {
+        val park = order("Park", dispensable = true, state = TransportOrderState.BEING_PROCESSED)
+        val sequence = OrderSequence("Seq", T0, orders = listOf("S1", "S2"), processingVehicle = "V1")
+        val availability = VehicleAvailability(mapOf("Park" to park)::get, mapOf("Seq" to sequence)::get)
+
+        test("a vehicle takes only order types it accepts") {
+            val picky = vehicle("V1").copy(acceptableOrderTypes = setOf(AcceptableOrderType("Transport", 0)))
+            val work = VehicleAvailability.Work(orderType = "Park")
+
+            availability.reasons(picky, work) shouldContainExactly listOf("does not accept type 'Park'")
+            availability.isAvailable(picky, VehicleAvailability.Work(orderType = "Transport")) shouldBe true
+        }
+
+        test("a vehicle bound to a sequence takes that sequence's orders only") {
+            val bound = vehicle("V1").copy(orderSequence = "Seq")
+
+            availability.isAvailable(bound, VehicleAvailability.Work(sequence = "Seq")) shouldBe true
+            availability.reasons(bound) shouldContainExactly listOf("bound to order sequence Seq")
+        }
+
+        test("a dispensable order is replaced only where the work may replace it") {
+            val parking = vehicle("V1").processing("Park")
+
+            availability.isAvailable(parking) shouldBe true
+            availability.reasons(parking, VehicleAvailability.Work(mayReplaceDispensable = false)) shouldContainExactly
+                listOf("processing order Park")
+        }
     }
 })

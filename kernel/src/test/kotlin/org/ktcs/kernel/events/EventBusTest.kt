@@ -33,6 +33,25 @@ class EventBusTest : FunSpec({
         subscription.tryReceive().getOrNull() shouldBe note("b")
     }
 
+    test("a failing listener neither keeps the event from the others nor delays the events after it") {
+        val bus = EventBus()
+        val later = mutableListOf<String>()
+        bus.listen { if ((it as UserNotificationEvent).notification.text == "a") bus.publish(note("b")) }
+        bus.listen { if ((it as UserNotificationEvent).notification.text == "a") error("listener broke on a") }
+        bus.listen { later += (it as UserNotificationEvent).notification.text }
+        val subscription = bus.subscribe()
+
+        val error = shouldThrow<IllegalStateException> { bus.publish(note("a")) }
+        error.message shouldBe "listener broke on a"
+        later shouldBe listOf("a", "b")
+        bus.publish(note("c"))
+
+        later shouldBe listOf("a", "b", "c")
+        val received = mutableListOf<KernelEvent>()
+        while (true) received += subscription.tryReceive().getOrNull() ?: break
+        received shouldBe listOf(note("a"), note("b"), note("c"))
+    }
+
     test("a subscriber that falls behind is cut off with a clear exception, without slowing the others") {
         val bus = EventBus()
         val slow = bus.subscribe(capacity = 3)

@@ -23,9 +23,7 @@ class LayoutChecksTest : FunSpec({
 
     test("a point on an unknown layer is an error") {
         val model = minimalPlant().mapPoints {
-            if (it.name ==
-                "A"
-            ) {
+            if (it.name == "A") {
                 it.copy(layout = it.layout.copy(layerId = 7))
             } else {
                 it

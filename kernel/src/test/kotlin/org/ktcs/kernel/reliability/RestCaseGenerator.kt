@@ -107,9 +107,7 @@ class RestCaseGenerator(seed: Long) {
             if (random.nextInt(8) != 0) fields += "\"destinations\":${destinations()}"
             if (random.nextBoolean()) fields += "\"properties\":${properties()}"
             if (random.nextInt(4) == 0) fields += "\"intendedVehicle\":${value(vehicleName())}"
-            if (random.nextInt(4) ==
-                0
-            ) {
+            if (random.nextInt(4) == 0) {
                 fields += "\"deadline\":${value(pick("2030-01-01T00:00:00Z", "yesterday", "-1", text()))}"
             }
             if (random.nextInt(4) == 0) fields += "\"dependencies\":[${value(text())}]"

@@ -103,9 +103,7 @@ private class FuzzOutcome {
     fun checkCreated(http: HttpClient, base: String) {
         val orders = names(http, "$base/transportOrders")
         val sequences = names(http, "$base/orderSequences")
-        if (orders !=
-            createdOrders
-        ) {
+        if (orders != createdOrders) {
             failures +=
                 "orders created without a 200: ${orders - createdOrders}, lost: ${createdOrders - orders}"
         }

@@ -90,9 +90,7 @@ class EdgeCostsTest : FunSpec({
         val small = BoundingBox(length = 500, width = 500)
         val model = detour.copy(
             points = detour.points.map {
-                if (it.name ==
-                    "B"
-                ) {
+                if (it.name == "B") {
                     Point("B", maxVehicleBoundingBox = small)
                 } else {
                     it

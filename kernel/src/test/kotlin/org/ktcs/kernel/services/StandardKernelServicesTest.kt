@@ -83,13 +83,34 @@ class StandardKernelServicesTest : FunSpec({
                 transportOrders.createTransportOrder(TransportOrderCreation("T", trip, intendedVehicle = "Vehicle-02"))
             }
             shouldThrow<IllegalStateChangeException> { kernel.serve { dispatcher.assignNow("T") } }.message shouldBe
-                "cannot assign 'T' to vehicle 'Vehicle-02' now: its integration level is TO_BE_RESPECTED"
+                "cannot assign 'T' to vehicle 'Vehicle-02' now: integration level TO_BE_RESPECTED"
 
             kernel.serve {
                 vehicles.setIntegrationLevel("Vehicle-02", org.ktcs.api.model.IntegrationLevel.TO_BE_UTILIZED)
             }
             kernel.context.runUntil { kernel.core.orders.require("T").state != TransportOrderState.DISPATCHABLE }
             kernel.core.orders.require("T").processingVehicle shouldBe "Vehicle-02"
+        }
+    }
+
+    // assignNow once checked less than the dispatcher: a paused vehicle, or one refusing the type, got the order.
+    test("immediate assignment refuses what the dispatcher refuses: a paused vehicle, a type it does not accept") {
+        kernel().use { kernel ->
+            kernel.serve {
+                vehicles.setPaused("Vehicle-02", true)
+                vehicles.setAllowedOrderTypes("Vehicle-03", setOf("Transport"))
+                transportOrders.createTransportOrder(TransportOrderCreation("P", trip, intendedVehicle = "Vehicle-02"))
+                transportOrders.createTransportOrder(
+                    TransportOrderCreation("S", trip, type = "Special", intendedVehicle = "Vehicle-03"),
+                )
+            }
+
+            shouldThrow<IllegalStateChangeException> { kernel.serve { dispatcher.assignNow("P") } }.message shouldBe
+                "cannot assign 'P' to vehicle 'Vehicle-02' now: paused"
+            shouldThrow<IllegalStateChangeException> { kernel.serve { dispatcher.assignNow("S") } }.message shouldBe
+                "cannot assign 'S' to vehicle 'Vehicle-03' now: does not accept type 'Special'"
+            kernel.core.orders.require("P").state shouldBe TransportOrderState.DISPATCHABLE
+            kernel.core.orders.require("S").state shouldBe TransportOrderState.DISPATCHABLE
         }
     }
 

@@ -11,6 +11,7 @@ import io.ktor.server.routing.route
 import org.ktcs.api.error.ObjectUnknownException
 import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.web.v1.booleanQuery
+import org.ktcs.kernel.web.v1.dispatcherTrigger
 import org.ktcs.kernel.web.v1.pathName
 import org.ktcs.kernel.web.v1.receiveJson
 
@@ -26,10 +27,7 @@ fun Route.transportOrderRoutes(services: KernelServices, json: TransportOrderJso
         val orders = services.transportOrders.transportOrders(vehicle)
         call.respond(json.list(orders, wholePool = vehicle == null))
     }
-    post("/dispatcher/trigger") {
-        services.dispatcher.dispatch()
-        call.respond(HttpStatusCode.OK)
-    }
+    dispatcherTrigger(services)
     route("/{NAME}") {
         get {
             val name = call.pathName()

@@ -12,6 +12,7 @@ import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.model.ProcState
 import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.web.v1.booleanQuery
+import org.ktcs.kernel.web.v1.dispatcherTrigger
 import org.ktcs.kernel.web.v1.parseEnum
 import org.ktcs.kernel.web.v1.pathName
 import org.ktcs.kernel.web.v1.receiveJson
@@ -24,10 +25,7 @@ fun Route.vehicleRoutes(services: KernelServices) = route("/vehicles") {
         val procState = call.request.queryParameters["procState"]?.let { parseEnum<ProcState>(it, "procState") }
         call.respond(services.vehicles.vehicles(procState).map { it.toDto() })
     }
-    post("/dispatcher/trigger") {
-        services.dispatcher.dispatch()
-        call.respond(HttpStatusCode.OK)
-    }
+    dispatcherTrigger(services)
     route("/{NAME}") {
         get {
             val name = call.pathName()
