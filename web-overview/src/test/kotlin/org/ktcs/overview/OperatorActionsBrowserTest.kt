@@ -173,7 +173,7 @@ class OperatorActionsBrowserTest : FunSpec({
         page().locator("#fit").click()
     }
 
-    browserTest("location and point names do not cover each other, zoomed in or far out") {
+    browserTest("location, point and vehicle names do not cover each other, zoomed in or far out") {
         fun Map<*, *>.n(key: String) = (this[key] as Number).toDouble()
         fun drawnNames(): List<Map<*, *>> {
             page().waitForTimeout(200.0)
@@ -192,6 +192,11 @@ class OperatorActionsBrowserTest : FunSpec({
         val fitted = drawnNames()
         fitted.size shouldBeGreaterThanOrEqual 16
         fitted.overlapping() shouldBe emptyList()
+        val vehicleNames = (page().evaluate("() => window.ktcsOverview.vehicleLabels()") as List<*>).map {
+            it as Map<*, *>
+        }
+        vehicleNames.size shouldBe 4
+        (fitted + vehicleNames).overlapping() shouldBe emptyList()
         repeat(6) { page().locator("#zoom-out").click() }
         val far = drawnNames()
         far.size shouldBeGreaterThanOrEqual 1

@@ -9,13 +9,15 @@ export class LabelSpace {
     this.boxes = [];
   }
 
+  /** Whether the box covers a box placed before. */
+  covers(box) {
+    return cellKeys(box).some((key) => this.cells.get(key)?.some((other) => overlaps(box, other)));
+  }
+
   /** Records the box and answers true if it covers no box placed before; answers false and records nothing if it does. */
   tryPlace(box) {
-    const keys = cellKeys(box);
-    for (const key of keys) {
-      if (this.cells.get(key)?.some((other) => overlaps(box, other))) return false;
-    }
-    for (const key of keys) {
+    if (this.covers(box)) return false;
+    for (const key of cellKeys(box)) {
       if (!this.cells.has(key)) this.cells.set(key, []);
       this.cells.get(key).push(box);
     }

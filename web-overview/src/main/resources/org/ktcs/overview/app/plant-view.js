@@ -37,6 +37,7 @@ export class PlantView {
     this.hiddenLayers = new Set();
     /** The boxes of the location and point names drawn last (names that would cover another are left out). */
     this.plantLabels = [];
+    this.plantLabelSpace = new LabelSpace();
     this.showLabels = true;
     this.selection = null;
     this.highlightedRoute = [];
@@ -203,6 +204,7 @@ export class PlantView {
     this.drawPoints(ctx, inView.points);
     this.drawLocations(ctx, inView.locations);
     this.plantLabels = [];
+    this.plantLabelSpace = new LabelSpace();
     if (this.showLabels) this.drawLabels(ctx, inView);
     this.lastDrawn = {
       points: inView.points.length,
@@ -341,6 +343,7 @@ export class PlantView {
     const locationSize = locationSymbolSize(this.view.scale);
     const labels = new LabelSpace();
     this.plantLabels = labels.boxes;
+    this.plantLabelSpace = labels;
     // Location names crowd each other on a zoomed-out large plant; a small plant always shows them.
     if (inView.locations.length <= 40 || locationSize >= 12) {
       for (const location of inView.locations) {

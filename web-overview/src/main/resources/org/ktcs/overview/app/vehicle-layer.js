@@ -125,13 +125,15 @@ export class VehicleLayer {
   }
 
   /**
-   * The baseline for a label centred at x that covers no label drawn before it in this frame: vehicles side by side
-   * (a queue, a charging row) would otherwise write their names over each other. Moves up one line at a time.
+   * The baseline for a label centred at x that covers no label drawn before it in this frame and no location or point
+   * name: vehicles side by side (a queue, a charging row) would otherwise write their names over each other. Moves up
+   * one line at a time.
    */
   freeLabelY(ctx, text, x, y) {
     const width = ctx.measureText(text).width + 4;
     const box = (baseline) => ({ minX: x - width / 2, maxX: x + width / 2, minY: baseline - LABEL_HEIGHT, maxY: baseline });
-    const overlaps = (a) => this.labelBoxes.some((b) => a.minX < b.maxX && b.minX < a.maxX && a.minY < b.maxY && b.minY < a.maxY);
+    const overlaps = (a) => this.plant.plantLabelSpace.covers(a) ||
+      this.labelBoxes.some((b) => a.minX < b.maxX && b.minX < a.maxX && a.minY < b.maxY && b.minY < a.maxY);
     let baseline = y;
     for (let tries = 0; tries < MAX_LABEL_SHIFTS && overlaps(box(baseline)); tries += 1) baseline -= LABEL_HEIGHT;
     this.labelBoxes.push(box(baseline));
