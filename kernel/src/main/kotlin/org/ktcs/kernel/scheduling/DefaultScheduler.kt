@@ -168,9 +168,6 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
      */
     fun claimIsBlocked(client: SchedulerClient): Boolean = safety.waitsForItself(client.name)
 
-    /** Whether [client]'s oldest request waits only because deadlock avoidance holds it back (for tests). */
-    internal fun isHeldBack(client: String): Boolean = deferred.any { it.client.name == client && pending.isHead(it) }
-
     /** What [client] still needs as deadlock avoidance sees it: its claimed route ahead and its way out. */
     fun needs(client: String): Set<String> = safety.needs(client)
 

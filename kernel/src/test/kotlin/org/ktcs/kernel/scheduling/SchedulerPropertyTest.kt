@@ -105,21 +105,13 @@ private class SchedulerRun(model: PlantModel, names: List<String>) {
         }
     }
 
-    // Paused clients, and clients whose request deadlock avoidance holds back (retried at every change, so not lost).
-    private fun waitingAnyway(): Set<String> = paused + clients.keys.filter(f.scheduler::isHeldBack)
-
     fun checkInvariants(step: Step) {
         val allocations = f.scheduler.allocations()
         val problems = oracle.sharedResources(allocations) +
             oracle.sharedSingleBlocks(allocations) +
             oracle.undirectedSharedBlocks(allocations, f.scheduler.blockDirections()) +
             oracle.unexpectedHoldings(allocations, kept) +
-            oracle.lostWakeUps(
-                allocations,
-                f.scheduler.pendingAllocations(),
-                f.scheduler.blockDirections(),
-                waitingAnyway(),
-            )
+            oracle.lostWakeUps(allocations, f.scheduler.pendingAllocations(), f.scheduler.blockDirections(), paused)
         check(problems.isEmpty()) {
             "after $step: $problems\nallocations=$allocations\npending=${f.scheduler.pendingAllocations()}"
         }
