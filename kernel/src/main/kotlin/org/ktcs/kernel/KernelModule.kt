@@ -60,6 +60,7 @@ fun kernelOptions(config: KtcsConfig) = KernelOptions(
     enableDriversOnStart = config[KtcsSettings.kernelEnableDrivers],
     initialIntegrationLevel = config[KtcsSettings.kernelInitialIntegrationLevel],
     redispatchIntervalMillis = config[KtcsSettings.dispatcherRedispatchInterval],
+    newOrderDispatchDelayMillis = config[KtcsSettings.dispatcherNewOrderDelay],
     sweepIntervalMillis = config[KtcsSettings.orderPoolSweepInterval],
     sweepAgeMillis = config[KtcsSettings.orderPoolSweepAge],
     deadlockCheckIntervalMillis = config[KtcsSettings.kernelDeadlockCheckInterval],

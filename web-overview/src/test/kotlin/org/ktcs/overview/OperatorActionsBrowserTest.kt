@@ -6,6 +6,8 @@ import io.kotest.assertions.nondeterministic.eventually
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.doubles.plusOrMinus
+import io.kotest.matchers.ints.shouldBeGreaterThanOrEqual
+import io.kotest.matchers.ints.shouldBeLessThan
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import kotlinx.serialization.json.Json
@@ -168,6 +170,34 @@ class OperatorActionsBrowserTest : FunSpec({
             }
         }
         shared.watched.screenshot("operator-labels-zoomed-out")
+        page().locator("#fit").click()
+    }
+
+    browserTest("location and point names do not cover each other, zoomed in or far out") {
+        fun Map<*, *>.n(key: String) = (this[key] as Number).toDouble()
+        fun drawnNames(): List<Map<*, *>> {
+            page().waitForTimeout(200.0)
+            return (page().evaluate("() => window.ktcsOverview.plantLabels()") as List<*>).map { it as Map<*, *> }
+        }
+        fun List<Map<*, *>>.overlapping() = indices.flatMap { i ->
+            (i + 1 until size).filter { j ->
+                val a = this[i]
+                val b = this[j]
+                a.n(
+                    "minX",
+                ) < b.n("maxX") && b.n("minX") < a.n("maxX") && a.n("minY") < b.n("maxY") && b.n("minY") < a.n("maxY")
+            }
+        }
+        page().locator("#fit").click()
+        val fitted = drawnNames()
+        fitted.size shouldBeGreaterThanOrEqual 16
+        fitted.overlapping() shouldBe emptyList()
+        repeat(6) { page().locator("#zoom-out").click() }
+        val far = drawnNames()
+        far.size shouldBeGreaterThanOrEqual 1
+        far.size shouldBeLessThan fitted.size
+        far.overlapping() shouldBe emptyList()
+        shared.watched.screenshot("operator-plant-names-zoomed-out")
         page().locator("#fit").click()
     }
 

@@ -22,7 +22,9 @@ class ConfigLoader(private val settings: List<Setting<*>> = KtcsSettings.all) {
         file?.let { path ->
             readFile(path).forEach { (line, key, raw) -> put(known(key, "$path:$line"), raw, "$path:$line") }
         }
-        environment.filterKeys { it.startsWith(ENV_PREFIX) }.toSortedMap().forEach { (name, raw) ->
+        environment.filterKeys {
+            it.startsWith(ENV_PREFIX) && it !in LAUNCHER_VARIABLES
+        }.toSortedMap().forEach { (name, raw) ->
             val setting = byEnvironmentName[name]
                 ?: throw ConfigException(
                     "unknown environment variable $name: kTCS knows ${byEnvironmentName.keys.joinToString()}",
@@ -68,6 +70,9 @@ class ConfigLoader(private val settings: List<Setting<*>> = KtcsSettings.all) {
 
     companion object {
         const val ENV_PREFIX = "KTCS_"
+
+        /** The `ktcs` launcher's own variables (JVM settings, class-data sharing), which the JVM it starts inherits. */
+        val LAUNCHER_VARIABLES = setOf("KTCS_JVM_DEFAULTS", "KTCS_CDS")
         private const val MAX_SUGGESTION_DISTANCE = 2
 
         /** The environment variable that sets [key], e.g. `KTCS_WEB_BINDADDRESS` for `web.bindAddress`. */

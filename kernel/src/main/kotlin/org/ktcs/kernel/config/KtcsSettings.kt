@@ -182,8 +182,15 @@ object KtcsSettings {
         "dispatcher.idleVehicleRedispatchingInterval",
         10_000,
         0L..3_600_000L,
-        "Milliseconds between safety-net dispatcher runs; it runs at once whenever an order or a vehicle becomes " +
+        "Milliseconds between safety-net dispatcher runs; it also runs whenever an order or a vehicle becomes " +
             "ready (0: off).",
+    )
+    val dispatcherNewOrderDelay = longSetting(
+        "dispatcher.newOrderDelay",
+        10,
+        0L..1_000L,
+        "Milliseconds a dispatcher run waits after a new order became dispatchable, so that orders created in " +
+            "quick succession share one run instead of each paying for a pass over every waiting order (0: at once).",
     )
     val dispatcherOrderPriorities = enumListSetting(
         "dispatcher.orderPriorities",
@@ -320,6 +327,7 @@ object KtcsSettings {
         routerExplicitDefault,
         routerComputationLimit,
         dispatcherRedispatchInterval,
+        dispatcherNewOrderDelay,
         dispatcherOrderPriorities,
         dispatcherVehiclePriorities,
         dispatcherVehicleCandidatePriorities,

@@ -61,7 +61,12 @@ class KernelCore(
     private val names = ObjectNames(context)
     private val factory = TransportOrderFactory(context, names)
     private val lifecycle = OrderLifecycle(orders, sequences, { router }, options.dismissUnroutableOrders)
-    private val trigger = DispatchTrigger(context, dispatcherProvider, options.redispatchIntervalMillis)
+    private val trigger = DispatchTrigger(
+        context,
+        dispatcherProvider,
+        options.redispatchIntervalMillis,
+        options.newOrderDispatchDelayMillis,
+    )
     val dispatchContext = KernelDispatchContext(this)
     val controllers = VehicleControllers(
         VehicleEnvironment(context, events, plant, orders, notifications, {
@@ -290,7 +295,7 @@ class KernelCore(
         }
         val becameDispatchable = order.name !in dispatchable
         dispatchable[order.name] = order
-        if (becameDispatchable) trigger.request()
+        if (becameDispatchable) trigger.requestForNewOrder()
     }
 
     private fun releaseFinishedSequence(event: OrderSequenceEvent) {

@@ -13,6 +13,8 @@ data class KernelOptions(
     val initialIntegrationLevel: IntegrationLevel = IntegrationLevel.TO_BE_UTILIZED,
     /** The dispatcher's safety-net period; it runs on events anyway (openTCS: idleVehicleRedispatchingInterval). */
     val redispatchIntervalMillis: Long = 10_000,
+    /** How long a run waits after a new order became dispatchable (`dispatcher.newOrderDelay`; 0 here, at once). */
+    val newOrderDispatchDelayMillis: Long = 0,
     /** Mark orders whose destinations no vehicle can connect UNROUTABLE at once. */
     val dismissUnroutableOrders: Boolean = true,
     /** How often final orders are swept out (openTCS: orderpool.sweepInterval). */

@@ -21,8 +21,16 @@ internal class OrderEligibility(private val run: DispatchRun) {
     }
 
     /** Why the order cannot go anywhere now: a location it goes to is locked; `null` if none is. */
-    fun lockedTarget(order: TransportOrder): String? = order.driveOrders
-        .map { it.destination.target }
-        .firstOrNull { run.model.location(it)?.locked == true }
-        ?.let { "target location $it is locked" }
+    fun lockedTarget(order: TransportOrder): String? {
+        if (lockedLocations.isEmpty()) return null
+        return order.driveOrders
+            .map { it.destination.target }
+            .firstOrNull { it in lockedLocations }
+            ?.let { "target location $it is locked" }
+    }
+
+    // Asked for every waiting order in every run; locations are rarely locked, so most runs skip the lookups.
+    private val lockedLocations: Set<String> by lazy {
+        run.model.locations.filter { it.locked }.mapTo(HashSet()) { it.name }
+    }
 }

@@ -28,7 +28,10 @@ internal object ModelXml {
         setProperty(XMLInputFactory.IS_SUPPORTING_EXTERNAL_ENTITIES, false)
     }
 
-    val mapper: XmlMapper = XmlMapper.builder(XmlFactory(inputFactory, XMLOutputFactory.newFactory()))
+    /** Built on first use: reading most files needs only [inputFactory] (see StreamingModelReader). */
+    val mapper: XmlMapper by lazy { newMapper() }
+
+    private fun newMapper(): XmlMapper = XmlMapper.builder(XmlFactory(inputFactory, XMLOutputFactory.newFactory()))
         .addModule(kotlinModule())
         .addModule(
             SimpleModule("xsd-int")

@@ -33,6 +33,10 @@ internal object PlantModelVersions {
         return ModelRead(model, warnings.all())
     }
 
-    private inline fun <reified T> decode(bytes: ByteArray, warnings: ReadWarnings, source: String): T =
+    // Files the streaming reader cannot read completely, Jackson reads: with its warnings and error messages.
+    private inline fun <reified T : Any> decode(bytes: ByteArray, warnings: ReadWarnings, source: String): T =
+        StreamingModelReader.read(bytes, T::class.java) ?: decodeWithJackson(bytes, warnings, source)
+
+    private inline fun <reified T> decodeWithJackson(bytes: ByteArray, warnings: ReadWarnings, source: String): T =
         decoding(source) { ModelXml.mapper.readerFor(T::class.java).withHandler(warnings.handler).readValue(bytes) }
 }

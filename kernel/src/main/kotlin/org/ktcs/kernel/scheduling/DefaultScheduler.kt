@@ -118,6 +118,9 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
 
     override fun pendingAllocations(): Map<String, List<Set<String>>> = pending.snapshot()
 
+    /** The clients whose next grant deadlock avoidance holds back now (until something is freed that makes it safe). */
+    fun heldBackClients(): Set<String> = deferred.mapTo(HashSet()) { it.client.name }
+
     /** The direction in which the users of each SAME_DIRECTION_ONLY block entered it, where known, by block name. */
     fun blockDirections(): Map<String, String> = occupancy.directions.directions()
 

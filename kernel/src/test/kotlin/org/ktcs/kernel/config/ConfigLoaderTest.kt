@@ -68,6 +68,10 @@ class ConfigLoaderTest : FunSpec({
             shouldThrow<ConfigException> { loader.load(null, mapOf("KTCS_WEB_PROT" to "1"), emptyList()) }
                 .message shouldContain "unknown environment variable KTCS_WEB_PROT"
         }
+        test("the launcher's own variables are no settings and no error") {
+            val config = loader.load(null, mapOf("KTCS_JVM_DEFAULTS" to "", "KTCS_CDS" to "off"), emptyList())
+            config.sourceOf(KtcsSettings.webPort) shouldBe "default"
+        }
         test("a port out of range") {
             shouldThrow<ConfigException> { loader.load(null, emptyMap(), listOf("web.port=70000")) }
                 .message shouldBe "--set web.port: bad value '70000' for web.port: must be between 0 and 65535"

@@ -162,6 +162,8 @@ function exposeForDiagnostics(plant, client, themes) {
     /** The vehicle the view follows (null if none) and the boxes of the vehicle labels drawn last. */
     following: () => plant.following ?? null,
     vehicleLabels: () => plant.vehicles.labelBoxes.map((box) => ({ ...box })),
+    /** The boxes of the location and point names drawn last. */
+    plantLabels: () => plant.plantLabels.map((box) => ({ ...box })),
     connected: () => client.connected,
     /** The style the configured vehicle theme gives a vehicle now. */
     vehicleStyle: (name) => {

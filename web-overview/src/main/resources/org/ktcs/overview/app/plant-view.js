@@ -7,6 +7,7 @@ import { ViewTransform } from './view-transform.js';
 import { VehicleLayer } from './vehicle-layer.js';
 import { clamp, drawCross, drawSymbol, locationSymbolSize, traceArrow } from './shapes.js';
 import { installPointerInput } from './pointer-input.js';
+import { LabelSpace, textBox } from './label-space.js';
 
 const COLOURS = {
   background: '#f6f7f9',
@@ -34,6 +35,8 @@ export class PlantView {
     this.view = new ViewTransform();
     this.geometry = null;
     this.hiddenLayers = new Set();
+    /** The boxes of the location and point names drawn last (names that would cover another are left out). */
+    this.plantLabels = [];
     this.showLabels = true;
     this.selection = null;
     this.highlightedRoute = [];
@@ -199,6 +202,7 @@ export class PlantView {
     this.drawLinks(ctx, inView.locations);
     this.drawPoints(ctx, inView.points);
     this.drawLocations(ctx, inView.locations);
+    this.plantLabels = [];
     if (this.showLabels) this.drawLabels(ctx, inView);
     this.lastDrawn = {
       points: inView.points.length,
@@ -335,11 +339,14 @@ export class PlantView {
     ctx.textAlign = 'center';
     ctx.textBaseline = 'top';
     const locationSize = locationSymbolSize(this.view.scale);
+    const labels = new LabelSpace();
+    this.plantLabels = labels.boxes;
     // Location names crowd each other on a zoomed-out large plant; a small plant always shows them.
     if (inView.locations.length <= 40 || locationSize >= 12) {
       for (const location of inView.locations) {
         const p = this.view.toScreen(location.x, location.y);
-        ctx.fillText(location.name, p.x, p.y + locationSize / 2 + 3);
+        const top = p.y + locationSize / 2 + 3;
+        if (labels.tryPlace(textBox(ctx, location.name, p.x, top, 13))) ctx.fillText(location.name, p.x, top);
       }
     }
     // Point names only once they no longer crowd each other.
@@ -348,7 +355,7 @@ export class PlantView {
       ctx.font = '10px system-ui, sans-serif';
       for (const point of inView.points) {
         const p = this.view.toScreen(point.x, point.y);
-        ctx.fillText(point.name, p.x, p.y + 7);
+        if (labels.tryPlace(textBox(ctx, point.name, p.x, p.y + 7, 12))) ctx.fillText(point.name, p.x, p.y + 7);
       }
     }
   }

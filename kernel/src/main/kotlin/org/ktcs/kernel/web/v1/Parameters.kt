@@ -2,6 +2,8 @@ package org.ktcs.kernel.web.v1
 
 import io.ktor.server.application.ApplicationCall
 import io.ktor.server.request.receiveText
+import kotlinx.serialization.DeserializationStrategy
+import kotlinx.serialization.serializer
 import org.ktcs.api.error.InvalidRequestException
 
 /** The path parameter [name]; routes only match when it is there. */
@@ -26,4 +28,8 @@ fun ApplicationCall.requiredQuery(name: String): String =
     request.queryParameters[name] ?: throw InvalidRequestException("query parameter $name is missing")
 
 /** The request body decoded as [T], with malformed JSON refused as bad input. */
-suspend inline fun <reified T> ApplicationCall.receiveJson(): T = V1Json.decodeRequest(receiveText())
+suspend inline fun <reified T> ApplicationCall.receiveJson(): T = receiveJson(serializer<T>())
+
+/** The request body decoded with [deserializer]: without looking up the serializer of a reified type per request. */
+suspend fun <T> ApplicationCall.receiveJson(deserializer: DeserializationStrategy<T>): T =
+    V1Json.decodeRequest(deserializer, receiveText())

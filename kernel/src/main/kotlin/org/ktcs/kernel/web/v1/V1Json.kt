@@ -1,7 +1,9 @@
 package org.ktcs.kernel.web.v1
 
+import kotlinx.serialization.DeserializationStrategy
 import kotlinx.serialization.SerializationException
 import kotlinx.serialization.json.Json
+import kotlinx.serialization.serializer
 import org.ktcs.api.error.InvalidRequestException
 
 /**
@@ -16,8 +18,11 @@ object V1Json {
     }
 
     /** Decodes a request body, turning malformed JSON into an [InvalidRequestException]. */
-    inline fun <reified T> decodeRequest(text: String): T = try {
-        json.decodeFromString<T>(text)
+    inline fun <reified T> decodeRequest(text: String): T = decodeRequest(serializer<T>(), text)
+
+    /** Decodes a request body with [deserializer], turning malformed JSON into an [InvalidRequestException]. */
+    fun <T> decodeRequest(deserializer: DeserializationStrategy<T>, text: String): T = try {
+        json.decodeFromString(deserializer, text)
     } catch (e: SerializationException) {
         throw InvalidRequestException("Malformed request body: ${e.message}")
     } catch (e: IllegalArgumentException) {

@@ -26,22 +26,13 @@ class TransportOrderJson {
      * The JSON array of [orders]. When they are the whole pool ([wholePool]), entries of orders no longer in it are
      * dropped, so removed orders are not kept alive by the cache.
      */
-    fun list(orders: List<TransportOrder>, wholePool: Boolean): ByteArray {
+    fun list(orders: List<TransportOrder>, wholePool: Boolean): JsonArrayContent {
         val parts = orders.map(::of)
         if (wholePool && entries.size > orders.size) {
             val names = orders.mapTo(HashSet(orders.size * 2)) { it.name }
             entries.keys.retainAll(names)
         }
-        val out = ByteArray(parts.sumOf { it.size } + parts.size.coerceAtLeast(1) + 1)
-        var at = 0
-        out[at++] = '['.code.toByte()
-        parts.forEachIndexed { index, part ->
-            if (index > 0) out[at++] = ','.code.toByte()
-            part.copyInto(out, at)
-            at += part.size
-        }
-        out[at++] = ']'.code.toByte()
-        return if (at == out.size) out else out.copyOf(at)
+        return JsonArrayContent(parts)
     }
 
     /** How many orders are cached (for tests). */

@@ -1,8 +1,6 @@
 package org.ktcs.kernel.web.v1.orders
 
-import io.ktor.http.ContentType
 import io.ktor.http.HttpStatusCode
-import io.ktor.http.withCharset
 import io.ktor.server.response.respond
 import io.ktor.server.response.respondBytes
 import io.ktor.server.routing.Route
@@ -27,7 +25,7 @@ fun Route.transportOrderRoutes(services: KernelServices, json: TransportOrderJso
     get {
         val vehicle = services.knownVehicle(call.request.queryParameters["intendedVehicle"])
         val orders = services.transportOrders.transportOrders(vehicle)
-        call.respondBytes(json.list(orders, wholePool = vehicle == null), JSON_UTF8)
+        call.respond(json.list(orders, wholePool = vehicle == null))
     }
     dispatcherTrigger(services)
     route("/{NAME}") {
@@ -39,7 +37,7 @@ fun Route.transportOrderRoutes(services: KernelServices, json: TransportOrderJso
             call.respondBytes(json.of(order), JSON_UTF8)
         }
         post {
-            val request = call.receiveJson<PostTransportOrderRequest>()
+            val request = call.receiveJson(PostTransportOrderRequest.serializer())
             val created = services.transportOrders.createTransportOrder(request.toDomain(call.pathName()))
             call.respondBytes(json.of(created), JSON_UTF8)
         }
@@ -66,8 +64,6 @@ fun Route.transportOrderRoutes(services: KernelServices, json: TransportOrderJso
         }
     }
 }
-
-private val JSON_UTF8 = ContentType.Application.Json.withCharset(Charsets.UTF_8)
 
 /** `/orderSequences`: list, read, create, mark complete. */
 fun Route.orderSequenceRoutes(services: KernelServices) = route("/orderSequences") {

@@ -4,6 +4,9 @@ import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.shouldNotBe
 import io.kotest.matchers.types.shouldBeSameInstanceAs
+import io.ktor.utils.io.ByteChannel
+import io.ktor.utils.io.readRemaining
+import kotlinx.io.readByteArray
 import kotlinx.serialization.builtins.ListSerializer
 import kotlinx.serialization.json.Json
 import org.ktcs.api.order.Destination
@@ -54,13 +57,32 @@ class TransportOrderJsonTest : FunSpec({
         val orders = listOf(order("T1"), order("T2"), order("T3"))
         cache.list(orders, wholePool = true)
 
-        val listed = cache.list(orders.drop(1), wholePool = true).decodeToString()
+        val listed = cache.list(orders.drop(1), wholePool = true).toByteArray().decodeToString()
 
         Json.parseToJsonElement(listed) shouldBe V1Json.json.encodeToJsonElement(
             ListSerializer(TransportOrderDto.serializer()),
             orders.drop(1).map { it.toDto() },
         )
         cache.size shouldBe 2
-        cache.list(emptyList(), wholePool = false).decodeToString() shouldBe "[]"
+        cache.list(emptyList(), wholePool = false).toByteArray().decodeToString() shouldBe "[]"
+    }
+
+    test("a list is written to the connection part by part as exactly the bytes its Content-Length announces") {
+        val cache = TransportOrderJson()
+        for (orders in listOf(emptyList(), listOf(order("T1")), listOf(order("T1"), order("T2"), order("T3")))) {
+            val content = cache.list(orders, wholePool = true)
+            val channel = ByteChannel()
+
+            content.writeTo(channel)
+            channel.flushAndClose()
+            val written = channel.readRemaining().readByteArray()
+
+            written shouldBe content.toByteArray()
+            written.size.toLong() shouldBe content.contentLength
+            Json.parseToJsonElement(written.decodeToString()) shouldBe V1Json.json.encodeToJsonElement(
+                ListSerializer(TransportOrderDto.serializer()),
+                orders.map { it.toDto() },
+            )
+        }
     }
 })
