@@ -17,14 +17,14 @@ import org.slf4j.LoggerFactory
 class DeadlockWatchdog(private val kernel: KernelCore) {
     private val log = LoggerFactory.getLogger(DeadlockWatchdog::class.java)
     private var next: Cancellable? = null
-    private var reported = emptySet<Set<String>>()
-    private var unresolved = emptySet<Set<String>>()
+    private val stuck = StuckStates()
     private val idleBlockers = IdleBlockers(kernel)
 
-    var detected = 0
-        private set
-    var resolved = 0
-        private set
+    /** How many distinct stuck states (deadlocks) were found; one that shows as several cycles counts once. */
+    val detected: Int get() = stuck.detected
+
+    /** How many deadlocks ended after the watchdog rerouted one of their vehicles. */
+    val resolved: Int get() = stuck.resolved
 
     /** How many idle vehicles were sent out of the way of waiting ones. */
     val idleVehiclesMoved: Int get() = idleBlockers.moved
@@ -52,32 +52,25 @@ class DeadlockWatchdog(private val kernel: KernelCore) {
         val graph = (kernel.scheduler as? DefaultScheduler)?.waitForGraph()
             ?: WaitForGraph.of(kernel.scheduler.allocations(), kernel.scheduler.pendingAllocations())
         val deadlocks = DeadlockDetector.detect(graph)
-        val current = deadlocks.mapTo(HashSet()) { it.vehicles.toSet() }
-        // Each deadlock is reported once, but breaking it is tried at every check for as long as it lasts: a vehicle
-        // that could not be routed around it before may be now.
-        val stillUnresolved = HashSet<Set<String>>()
+        val allocations by lazy { kernel.scheduler.allocations() }
+        val held = { vehicle: String -> allocations[vehicle].orEmpty() }
+        stuck.startCheck(held) { it in graph.edges }
+        // Each deadlock is reported once; breaking it is tried at once and then, for as long as nothing changes, at
+        // growing intervals: a vehicle that could not be routed around it before may be now.
         deadlocks.forEach { deadlock ->
-            val vehicles = deadlock.vehicles.toSet()
-            val new = vehicles !in reported
-            if (new) {
-                detected++
-                report(deadlock)
-            } else if (vehicles !in unresolved) {
-                return@forEach
-            }
+            val verdict = stuck.observe(deadlock.vehicles, held)
+            if (verdict.isNew) report(deadlock)
+            if (!verdict.resolveNow) return@forEach
             if (DeadlockDetector.resolutions(deadlock, graph).any {
                     kernel.controllers.controller(it.vehicle).reroute(it.resourcesToAvoid)
                 }
             ) {
-                resolved++
-                log.info("deadlock resolved by rerouting: vehicles={}", deadlock.vehicles)
-            } else {
-                if (new) log.warn("deadlock not resolved yet, no way around it: vehicles={}", deadlock.vehicles)
-                stillUnresolved += vehicles
+                stuck.rerouted(deadlock.vehicles)
+                log.info("deadlock: rerouted a vehicle to break it: vehicles={}", deadlock.vehicles)
+            } else if (verdict.isNew) {
+                log.warn("deadlock not resolved yet, no way around it: vehicles={}", deadlock.vehicles)
             }
         }
-        reported = current
-        unresolved = stillUnresolved
         idleBlockers.check(graph)
     }
 

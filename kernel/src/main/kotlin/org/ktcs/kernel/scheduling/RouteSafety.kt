@@ -176,7 +176,10 @@ internal class RouteSafety(
                 continue
             }
             ahead += step.keys
-            if (!step.twoWay && !holding.containsAll(step.keys)) return LookAhead(ahead, emptyList())
+            val holdsAll = holding.containsAll(step.keys)
+            // An operation where the client stands: what it waits for next is the step after it, not any way out.
+            if (!holdsAll && step.keys.all { it in holding || exits.isLocation(it) }) continue
+            if (!step.twoWay && !holdsAll) return LookAhead(ahead, emptyList())
             step.stop?.let { return LookAhead(ahead + it.required, it.options) }
         }
         ahead += exit.required

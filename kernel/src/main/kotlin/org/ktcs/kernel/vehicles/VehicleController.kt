@@ -437,8 +437,36 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         val position = env.plant.vehicle(name).currentPosition
         val first = remaining.firstOrNull() ?: return false
         val path = first.command.step.path
+        if (remaining.all { it.command.step.path == null }) {
+            rerouteNextLeg()
+            return false
+        }
         return (path != null && reroute(setOf(path)) && !scheduler.claimIsBlocked(this)) ||
             reroute(first.resources - setOfNotNull(position))
+    }
+
+    /**
+     * The current drive order is an operation where the vehicle stands, so its first move, the one that would close
+     * the cycle, is the next drive order's: route that drive order around its first path, if the plant allows, and
+     * claim the new way. Its commands are planned when it starts.
+     */
+    private fun rerouteNextLeg() {
+        val order = env.orders.require(currentOrder!!)
+        val index = order.currentDriveOrderIndex
+        val next = order.driveOrders.getOrNull(index + 1) ?: return
+        val route = next.route ?: return
+        val start = route.steps.firstOrNull()?.sourcePoint ?: return
+        val first = route.steps.first().path ?: return
+        val target = route.finalDestinationPoint ?: return
+        val found = env.router().routes(env.plant.vehicle(name), start, target, setOf(first)).firstOrNull() ?: return
+        env.orders.update(order.name) { current ->
+            current.copy(
+                driveOrders = current.driveOrders.map {
+                    if (it.name == next.name) it.copy(route = found) else it
+                },
+            )
+        }
+        claimRestOfOrder(env.orders.require(order.name), index)
     }
 
     /** The driver can take more commands now (e.g. it was enabled). */

@@ -133,4 +133,28 @@ class DeadlockAvoidanceTest : FunSpec({
         // After T, v2 would need the way out of T: over R and S, then any one of P (v3), U or X; U and X are free.
         DeadlockDetector.detect(f.scheduler.waitForGraph()).shouldBeEmpty()
     }
+    test("an operation where the vehicle stands: its fresh claim waits for the first move after the operation") {
+        // v1 stands at A beside station L and has a way out over F (B -> F) or on around the square; v2, v3 and v4
+        // stand on B, C and D and each wants the next corner, so v4 waits for A.
+        val model = plant("A-B", "B-C", "C-D", "D-A", "A-F", "F-B")
+            .let { it.copy(locations = listOf(Location("L", "station", links = listOf(Link("A"))))) }
+        val f = SchedulerFixture(model)
+        val (v1, v2, v3, v4) = listOf("v1" to "A", "v2" to "B", "v3" to "C", "v4" to "D").map { (name, point) ->
+            f.client(name).also { f.scheduler.allocateNow(it, setOf(point)) }
+        }
+        f.scheduler.claim(v2, listOf(setOf("B-C", "C")))
+        f.scheduler.claim(v3, listOf(setOf("C-D", "D")))
+        f.scheduler.claim(v4, listOf(setOf("D-A", "A")))
+        f.scheduler.claimIsBlocked(v1) shouldBe false
+
+        // Its order: an operation at L, where it stands, then on to B, which closes the cycle.
+        f.scheduler.claim(v1, listOf(setOf("A", "L"), setOf("A-B", "B")))
+        f.scheduler.claimIsBlocked(v1) shouldBe true
+
+        // Routed on over F instead, it waits for nobody.
+        f.scheduler.claim(v1, listOf(setOf("A", "L"), setOf("A-F", "F"), setOf("F-B", "B")))
+        f.scheduler.claimIsBlocked(v1) shouldBe false
+        f.allocate(v1, "A", "L")
+        v1.granted shouldContainExactly listOf(setOf("A", "L"))
+    }
 })
