@@ -94,6 +94,18 @@ class LoopbackDriverMovementTest : FunSpec({
         harness.context.timesOf<Report.PrecisePosition>().filter { it > 0 } shouldBe listOf(11_000L, 22_000L)
     }
 
+    test("a command that arrives after the vehicle reached the end of its path, before its arrival timer fired") {
+        for (late in listOf(0L, 1L, 7L, 250L, 3_000L)) {
+            val harness = Harness()
+            harness.send(aToB)
+            harness.clock.advanceTo(11_999)
+            harness.clock.jumpTo(12_000 + late)
+            harness.send(bToC)
+            harness.clock.runUntilIdle()
+            harness.context.reportsOf<Report.Executed>() shouldHaveSize 2
+        }
+    }
+
     test("a kernel that sends the next command while hearing of the last gets each carried out once") {
         val harness = Harness()
         harness.context.afterExecuted = { if (it == aToB) harness.driver.enqueueCommand(bToC) }
