@@ -24,13 +24,11 @@ import kotlin.time.Duration.Companion.seconds
  * (demo plant, loopback vehicles): each action is done in the page and checked in the kernel through the web API.
  */
 class OperatorActionsBrowserTest : FunSpec({
-    val shared = SharedOverview()
-    val ktcs: () -> RunningKtcs = { shared.ktcs!! }
-    val page: () -> Page = { shared.watched.page }
+    val shared = OverviewSession("() => window.ktcsOverview && window.ktcsOverview.drawn().vehicles === 4")
+    val ktcs: () -> RunningKtcs = { shared.ktcs }
+    val page: () -> Page = { shared.page }
 
-    fun browserTest(name: String, body: suspend () -> Unit) = test(name) {
-        shared.run("() => window.ktcsOverview && window.ktcsOverview.drawn().vehicles === 4", body)
-    }
+    fun browserTest(name: String, body: suspend () -> Unit) = shared.test(this, name, body)
 
     fun json(path: String) = Json.parseToJsonElement(ktcs().get(path).body())
 

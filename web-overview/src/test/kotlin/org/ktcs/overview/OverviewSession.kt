@@ -6,9 +6,9 @@ import io.kotest.matchers.collections.shouldBeEmpty
 
 /**
  * The real application and one headless Chromium page on its overview, shared by the tests of one spec, in order:
- * the first test that calls [open] starts them.
+ * the first test that calls [open] starts them and waits until the page answers true to [ready].
  */
-class OverviewSession {
+class OverviewSession(private val ready: String = "() => window.ktcsOverview && window.ktcsOverview.connected()") {
     private var application: RunningKtcs? = null
     private var session: Chromium.Session? = null
     lateinit var watched: Chromium.WatchedPage
@@ -25,7 +25,7 @@ class OverviewSession {
         session = Chromium.start()
         watched = session!!.newPage()
         page.navigate(ktcs.baseUrl + "/")
-        page.waitForFunction("() => window.ktcsOverview && window.ktcsOverview.connected()")
+        page.waitForFunction(ready)
     }
 
     /** A test of [spec] that opens the overview first and fails on any console or page error. */
