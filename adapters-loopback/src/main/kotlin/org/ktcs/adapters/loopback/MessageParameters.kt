@@ -22,9 +22,7 @@ internal class MessageParameters(val all: Map<String, String>) {
 
     fun percent(vararg names: String): Double {
         val value = double(*names)
-        if (value !in
-            0.0..100.0
-        ) {
+        if (value !in 0.0..100.0) {
             throw MessageRejectedException("parameter '${names.first()}' must be 0 to 100, was $value")
         }
         return value

@@ -16,9 +16,7 @@ object PlantModelLoader {
     /** The demo plant shipped inside the kernel. */
     const val DEMO_RESOURCE = "/org/ktcs/kernel/demo/ktcs-demo.xml"
 
-    fun load(file: Path?): LoadedModel = if (file ==
-        null
-    ) {
+    fun load(file: Path?): LoadedModel = if (file == null) {
         loadDemo()
     } else {
         validated(PlantModelFiles.readWithWarnings(file), file.toString())

@@ -54,9 +54,7 @@ internal object SplitElements {
         return splits
     }
 
-    private fun describe(element: String, name: String?) = if (name ==
-        null
-    ) {
+    private fun describe(element: String, name: String?) = if (name == null) {
         "<$element>"
     } else {
         "<$element name=\"$name\">"

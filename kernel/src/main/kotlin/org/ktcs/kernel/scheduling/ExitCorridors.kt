@@ -12,9 +12,7 @@ internal class ExitCorridors(model: PlantModel) {
     private val exits: Map<String, List<Pair<String, String>>> = buildMap<String, MutableList<Pair<String, String>>> {
         for (path in model.paths) {
             if (path.maxVelocity > 0) getOrPut(path.sourcePoint, ::ArrayList) += path.name to path.destinationPoint
-            if (path.maxReverseVelocity >
-                0
-            ) {
+            if (path.maxReverseVelocity > 0) {
                 getOrPut(path.destinationPoint, ::ArrayList) += path.name to path.sourcePoint
             }
         }

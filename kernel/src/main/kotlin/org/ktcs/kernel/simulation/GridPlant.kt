@@ -75,9 +75,7 @@ class GridPlant(private val width: Int, private val height: Int, private val spa
         for (y in 0 until height - 1) {
             val from = crossing(width - 1, y)
             val to = crossing(width - 1, y + 1)
-            if (y % 4 ==
-                1
-            ) {
+            if (y % 4 == 1) {
                 charger("Charger-E$y", from, to)
             } else {
                 bay("Park-E$y", from, to, 1, 0, PointType.PARK_POSITION)

@@ -130,9 +130,7 @@ class TrafficGrid(private val width: Int, private val height: Int, private val v
             (a.x + b.x) / 2
         } else {
             (
-                if (from.first ==
-                    0
-                ) {
+                if (from.first == 0) {
                     -PARK_OFFSET
                 } else {
                     (width - 1) * SPACING + PARK_OFFSET
@@ -141,9 +139,7 @@ class TrafficGrid(private val width: Int, private val height: Int, private val v
         }
         val y = if (horizontal) {
             (
-                if (from.second ==
-                    0
-                ) {
+                if (from.second == 0) {
                     -PARK_OFFSET
                 } else {
                     (height - 1) * SPACING + PARK_OFFSET

@@ -79,9 +79,7 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
                 currentDriveOrderIndex = index,
                 currentRouteStepIndex = -1,
                 driveOrders = current.driveOrders.mapIndexed { i, it ->
-                    if (i ==
-                        index
-                    ) {
+                    if (i == index) {
                         it.copy(state = DriveOrderState.TRAVELLING)
                     } else {
                         it
@@ -170,9 +168,7 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         env.orders.update(order.name) { current ->
             current.copy(
                 driveOrders = current.driveOrders.mapIndexed { i, it ->
-                    if (i ==
-                        index
-                    ) {
+                    if (i == index) {
                         it.copy(state = DriveOrderState.FINISHED)
                     } else {
                         it
@@ -196,9 +192,7 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
      */
     fun withdraw(immediate: Boolean, reason: String = "withdrawn") {
         val order = currentOrder ?: return
-        if (env.orders.require(order).state ==
-            TransportOrderState.BEING_PROCESSED
-        ) {
+        if (env.orders.require(order).state == TransportOrderState.BEING_PROCESSED) {
             env.orders.transition(order, TransportOrderState.WITHDRAWN, reason)
         }
         withdrawReason = reason

@@ -55,9 +55,7 @@ private fun refusal(call: ApplicationCall, origins: BrowserOrigins): Refusal? {
 /** A body must be JSON in a charset the JVM knows. */
 private fun contentRefusal(header: String?, type: ContentType?): Refusal? {
     if (header == null) return null
-    if (type ==
-        null
-    ) {
+    if (type == null) {
         return HttpStatusCode.UnsupportedMediaType to "malformed Content-Type '$header'; send application/json"
     }
     val charset = type.parameter("charset")

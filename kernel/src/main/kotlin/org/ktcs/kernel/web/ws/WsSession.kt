@@ -60,9 +60,7 @@ class WsSession(
         } catch (error: IllegalArgumentException) {
             return null.also { send(WsError("not a kTCS WebSocket message: ${error.message}")) }
         }
-        if (message.type !=
-            "subscribe"
-        ) {
+        if (message.type != "subscribe") {
             return null.also { send(WsError("unknown message type '${message.type}'; expected 'subscribe'")) }
         }
         if (message.topics.isEmpty()) {

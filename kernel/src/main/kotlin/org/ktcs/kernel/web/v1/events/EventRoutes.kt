@@ -33,14 +33,10 @@ fun Route.eventRoutes(services: KernelServices, buffer: StatusEventBuffer) {
         val min = call.longQuery("minSequenceNo", 0)
         val max = call.longQuery("maxSequenceNo", Long.MAX_VALUE)
         val timeout = call.longQuery("timeout", DEFAULT_TIMEOUT_MILLIS)
-        if (min < 0 ||
-            max < min
-        ) {
+        if (min < 0 || max < min) {
             throw InvalidRequestException("need 0 <= minSequenceNo <= maxSequenceNo, got $min and $max")
         }
-        if (timeout !in
-            0..MAX_TIMEOUT_MILLIS
-        ) {
+        if (timeout !in 0..MAX_TIMEOUT_MILLIS) {
             throw InvalidRequestException("timeout must be between 0 and $MAX_TIMEOUT_MILLIS ms, was $timeout")
         }
         call.respond(GetEventsResponse(Instant.now().toWire(), buffer.await(min, max, timeout)))
