@@ -44,10 +44,12 @@ fun Route.eventRoutes(services: KernelServices, buffer: StatusEventBuffer) {
     get("/sse") {
         val wanted = SSE_KINDS.filter { call.booleanQuery(it) }.toSet()
         call.response.cacheControl(CacheControl.NoCache(null))
+        // Subscribed before the client hears anything: a change it makes once the stream answered is on the stream.
+        val (_, events) = services.eventsAfter {}
         call.respondBytesWriter(ContentType.Text.EventStream) {
             writeStringUtf8(": kTCS event stream\n\n")
             flush()
-            services.events().collect { event ->
+            events.collect { event ->
                 sseFrame(event, wanted)?.let {
                     writeStringUtf8(it)
                     flush()

@@ -30,7 +30,6 @@ import java.net.URI
 import java.net.http.HttpRequest
 import java.net.http.HttpResponse
 import java.util.concurrent.CopyOnWriteArrayList
-import kotlin.concurrent.thread
 import kotlin.time.Duration.Companion.seconds
 
 /** A step driver with a panel: it records the commands it gets and publishes each as an event. */
@@ -147,21 +146,12 @@ class DriverPanelWebTest : FunSpec({
             HttpRequest.newBuilder(URI("$base/sse?/events/driverEvents=true")).build(),
             HttpResponse.BodyHandlers.ofLines(),
         )
-        // The stream subscribes to the kernel's events after it answered: repeat the command until one arrives.
-        val sending = thread {
-            while (!Thread.currentThread().isInterrupted) {
-                command("Vehicle-02", speed("4")).statusCode() shouldBe 200
-                try {
-                    Thread.sleep(200)
-                } catch (stopped: InterruptedException) {
-                    return@thread
-                }
-            }
-        }
-        val frames = sse.body().iterator().asSequence().filter { it.startsWith("event: ") || it.startsWith("data: ") }
-            .take(2).toList()
-        sending.interrupt()
-        sending.join()
+        // Once the stream has answered, a change made is on it (the stream subscribed before answering).
+        command("Vehicle-02", speed("4")).statusCode() shouldBe 200
+        val frames = java.util.concurrent.CompletableFuture.supplyAsync {
+            sse.body().iterator().asSequence().filter { it.startsWith("event: ") || it.startsWith("data: ") }
+                .take(2).toList()
+        }.get(10, java.util.concurrent.TimeUnit.SECONDS)
         frames[0] shouldBe "event: /events/driverEvents"
         frames[1] shouldContain
             """"vehicle":"Vehicle-02","type":"test:got","payload":{"command":"setSpeed","value":"4"}"""
