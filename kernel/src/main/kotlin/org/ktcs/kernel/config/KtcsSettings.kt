@@ -296,6 +296,13 @@ object KtcsSettings {
             "fine unless set explicitly.",
     )
 
+    val dataDirectory = stringSetting(
+        "kernel.dataDirectory",
+        "data",
+        "Directory where kTCS keeps what it must not lose (the published plant model, its state store, log files); " +
+            "relative to the working directory, created on first use.",
+    )
+
     val all: List<Setting<*>> = listOf(
         webBindAddress,
         webPort,
@@ -346,7 +353,7 @@ object KtcsSettings {
         loopbackPositionReportInterval,
         overviewVehicleTheme,
         overviewLocationTheme,
-    ) + WatchdogSettings.all + extensionsDirectory
+    ) + WatchdogSettings.all + extensionsDirectory + dataDirectory
 }
 
 /** Log levels a user can choose, in SLF4J's names. */
