@@ -11,6 +11,7 @@ dependencyResolutionManagement {
 
 include(
     "api",
+    "extension-api",
     "kernel",
     "adapters-loopback",
     "web-overview",

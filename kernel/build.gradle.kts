@@ -11,6 +11,7 @@ application {
 // the kernel and see these too, as they do in Maven.
 dependencies {
     api(project(":api"))
+    api(project(":extension-api"))
     api(libs.kotlinx.coroutines.core)
     api(libs.kotlinx.serialization.json)
     api(libs.koin.core)

@@ -3,7 +3,9 @@ plugins {
 }
 
 dependencies {
-    implementation(project(":kernel"))
+    implementation(project(":extension-api"))
+    implementation(libs.kotlinx.serialization.json)
+    testImplementation(project(":kernel"))
     testImplementation(project(":adapters-loopback"))
     testImplementation(libs.playwright)
 }

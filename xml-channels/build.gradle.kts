@@ -3,5 +3,9 @@ plugins {
 }
 
 dependencies {
-    implementation(project(":kernel"))
+    implementation(project(":extension-api"))
+    implementation(libs.jackson.dataformat.xml)
+    implementation(libs.jackson.module.kotlin)
+    implementation(libs.ktor.network)
+    testImplementation(project(":kernel"))
 }

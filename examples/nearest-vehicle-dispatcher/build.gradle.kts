@@ -3,6 +3,7 @@ plugins {
 }
 
 dependencies {
-    implementation(project(":kernel"))
+    implementation(project(":extension-api"))
+    testImplementation(project(":kernel"))
     testImplementation(project(":adapters-loopback"))
 }

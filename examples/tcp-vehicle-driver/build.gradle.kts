@@ -3,5 +3,6 @@ plugins {
 }
 
 dependencies {
-    implementation(project(":kernel"))
+    implementation(project(":extension-api"))
+    testImplementation(project(":kernel"))
 }

@@ -113,7 +113,7 @@ private fun readBuilds(): Pair<MavenBuild, GradleBuild> {
 }
 
 /** Set by e2e-tests/pom.xml (and build.gradle.kts); otherwise the nearest directory with settings.gradle.kts. */
-private fun repositoryRoot(): Path =
+internal fun repositoryRoot(): Path =
     System.getProperty("ktcs.repositoryRoot")?.takeIf { it.isNotBlank() }?.let { Path.of(it) }
         ?: generateSequence(Path.of("").toAbsolutePath()) { it.parent }
             .firstOrNull { it.resolve("settings.gradle.kts").exists() }

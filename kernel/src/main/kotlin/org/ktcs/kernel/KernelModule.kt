@@ -2,6 +2,7 @@ package org.ktcs.kernel
 
 import org.koin.core.module.Module
 import org.koin.dsl.module
+import org.ktcs.api.dispatching.DispatchContext
 import org.ktcs.api.dispatching.Dispatcher
 import org.ktcs.api.dispatching.RecoveryEvaluator
 import org.ktcs.api.driver.VehicleDriverFactory
@@ -9,7 +10,9 @@ import org.ktcs.api.model.PlantModel
 import org.ktcs.api.routing.Router
 import org.ktcs.api.scheduling.Scheduler
 import org.ktcs.api.service.KernelServices
-import org.ktcs.kernel.config.KtcsConfig
+import org.ktcs.extension.InstalledDriverPanels
+import org.ktcs.extension.KernelDefaults
+import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.kernel.config.KtcsSettings
 import org.ktcs.kernel.config.WatchdogSettings
 import org.ktcs.kernel.context.KernelContext
@@ -27,7 +30,9 @@ import java.util.ServiceLoader
 
 /**
  * The kernel's Koin definitions. Router, Scheduler, Dispatcher and RecoveryEvaluator are defined by type, so an
- * extension's module that defines one of these types again replaces the default.
+ * extension's module that defines one of these types again replaces the default; [KernelDefaults] keeps the default
+ * dispatcher reachable for one that wraps it. What extensions may ask for is listed on
+ * [org.ktcs.extension.KtcsExtension].
  */
 fun kernelModule(config: KtcsConfig, model: PlantModel, context: KernelContext): Module = module {
     single { config }
@@ -38,7 +43,14 @@ fun kernelModule(config: KtcsConfig, model: PlantModel, context: KernelContext):
     single<Router> { DefaultRouter(get()) }
     single<Scheduler> { DefaultScheduler(get(), get<KernelContext>()) }
     single<RecoveryEvaluator> { DefaultRecoveryEvaluator(config[KtcsSettings.dispatcherRecoveryThreshold]) }
-    single<Dispatcher> { DefaultDispatcher(get(), get<KernelCore>().dispatchContext, get()) }
+    single<DispatchContext> { get<KernelCore>().dispatchContext }
+    single<KernelDefaults> {
+        val scope = this
+        object : KernelDefaults {
+            override fun dispatcher(): Dispatcher = DefaultDispatcher(scope.get(), scope.get(), scope.get())
+        }
+    }
+    single<Dispatcher> { get<KernelDefaults>().dispatcher() }
     single {
         val factories = getAll<VehicleDriverFactory>() + ServiceLoader.load(VehicleDriverFactory::class.java).toList()
         KernelCore(
@@ -53,6 +65,7 @@ fun kernelModule(config: KtcsConfig, model: PlantModel, context: KernelContext):
         )
     }
     single<KernelServices> { StandardKernelServices(get()) }
+    single<InstalledDriverPanels> { InstalledDriverPanels { driver -> get<KernelCore>().controllers.factory(driver)?.panel } }
 }
 
 fun kernelOptions(config: KtcsConfig) = KernelOptions(

@@ -2,7 +2,7 @@ package com.example.extensions
 
 import org.koin.dsl.module
 import org.ktcs.api.dispatching.Dispatcher
-import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.extension.KtcsExtension
 
 // Outside org.ktcs.kernel on purpose: the kernel tells an extension's failures apart by the extension's package.
 

@@ -4,7 +4,7 @@ import org.ktcs.api.overview.OverviewContribution
 import org.ktcs.api.overview.OverviewPanel
 import org.ktcs.api.overview.OverviewTheme
 import org.ktcs.api.overview.ThemeTarget
-import org.ktcs.kernel.extension.ExtensionException
+import org.ktcs.extension.ExtensionException
 
 /** Every panel and theme of every extension, by name; two with the same name stop the start. */
 class Contributions(all: List<OverviewContribution>) {

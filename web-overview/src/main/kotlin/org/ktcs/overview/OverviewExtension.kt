@@ -3,11 +3,11 @@ package org.ktcs.overview
 import org.koin.core.qualifier.named
 import org.koin.dsl.module
 import org.ktcs.api.overview.OverviewContribution
-import org.ktcs.kernel.config.KtcsConfig
-import org.ktcs.kernel.config.KtcsSettings
-import org.ktcs.kernel.core.KernelCore
-import org.ktcs.kernel.extension.KtcsExtension
-import org.ktcs.kernel.web.WebContribution
+import org.ktcs.extension.config.KtcsConfig
+import org.ktcs.extension.InstalledDriverPanels
+import org.ktcs.extension.KtcsExtension
+import org.ktcs.extension.web.WebContribution
+import org.ktcs.extension.web.WebServerInfo
 
 /**
  * The browser plant overview as a kTCS extension: it serves the page at `/`, lists every [OverviewContribution] of
@@ -16,6 +16,8 @@ import org.ktcs.kernel.web.WebContribution
  */
 class OverviewExtension : KtcsExtension {
     override val name: String = "web-overview"
+
+    override val settings = OverviewConfigKeys.all
 
     override fun module() = module {
         BuiltInContributions.all(OverviewExtension::class.java.classLoader).forEach { contribution ->
@@ -27,8 +29,8 @@ class OverviewExtension : KtcsExtension {
             OverviewRoutes(
                 contributions,
                 ThemeSelection.from(config, contributions),
-                accessKeyRequired = config[KtcsSettings.webAccessKey].isNotEmpty(),
-                driverPanel = { driver -> getOrNull<KernelCore>()?.controllers?.factory(driver)?.panel },
+                accessKeyRequired = getOrNull<WebServerInfo>()?.accessKeyRequired ?: false,
+                driverPanel = { driver -> getOrNull<InstalledDriverPanels>()?.of(driver) },
             )
         }
     }

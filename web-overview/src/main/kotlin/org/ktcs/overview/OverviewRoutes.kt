@@ -15,7 +15,7 @@ import kotlinx.serialization.Serializable
 import kotlinx.serialization.builtins.ListSerializer
 import kotlinx.serialization.json.Json
 import org.ktcs.api.driver.DriverPanel
-import org.ktcs.kernel.web.WebContribution
+import org.ktcs.extension.web.WebContribution
 
 /**
  * The overview's routes: the page at `/`, its own files at `/overview/app/`, the list of panels and themes at

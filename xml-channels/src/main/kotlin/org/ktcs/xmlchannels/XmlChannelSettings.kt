@@ -1,14 +1,12 @@
 package org.ktcs.xmlchannels
 
-import org.ktcs.kernel.config.KtcsConfig
-import org.ktcs.kernel.config.KtcsSettings
+import org.ktcs.extension.config.KtcsConfig
 import java.nio.file.Path
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.seconds
 
 /**
- * How the XML channels run; the defaults are openTCS 4.x's (`xmlhostinterface.*`).
+ * How the XML channels run; the defaults are those of [XmlConfigKeys], openTCS 4.x's (`xmlhostinterface.*`).
  *
  * @property idleTimeout the deadline for a whole order telegram: a connection that has not sent it completely by then
  *   is closed without a receipt (openTCS applied it per read, so a client trickling bytes held a thread for good).
@@ -19,16 +17,16 @@ import kotlin.time.Duration.Companion.seconds
  * @property statusBufferSize status messages queued for one client; a client that falls further behind is dropped.
  */
 data class XmlChannelSettings(
-    val bindAddress: String = "0.0.0.0",
-    val ordersPort: Int = 55555,
-    val statusPort: Int = 44444,
-    val idleTimeout: Duration = 10.seconds,
-    val inputLimit: Int = 100 * 1024,
-    val statusSeparator: String = "|",
-    val scriptsDirectory: Path = Path.of("scripts"),
-    val statusBufferSize: Int = 1000,
-    val ordersMaxConnections: Int = 100,
-    val statusMaxConnections: Int = 100,
+    val bindAddress: String = XmlConfigKeys.bindAddress.default,
+    val ordersPort: Int = XmlConfigKeys.ordersPort.default,
+    val statusPort: Int = XmlConfigKeys.statusPort.default,
+    val idleTimeout: Duration = XmlConfigKeys.ordersIdleTimeout.default.milliseconds,
+    val inputLimit: Int = XmlConfigKeys.ordersInputLimit.default,
+    val statusSeparator: String = XmlConfigKeys.statusSeparator.default,
+    val scriptsDirectory: Path = Path.of(XmlConfigKeys.scriptsDirectory.default),
+    val statusBufferSize: Int = XmlConfigKeys.statusBufferSize.default,
+    val ordersMaxConnections: Int = XmlConfigKeys.ordersMaxConnections.default,
+    val statusMaxConnections: Int = XmlConfigKeys.statusMaxConnections.default,
 ) {
     init {
         require(idleTimeout.isPositive()) { "idle timeout must be positive, not $idleTimeout" }
@@ -46,16 +44,16 @@ data class XmlChannelSettings(
     companion object {
         /** The settings from kTCS's `xml.*` configuration keys. */
         fun from(config: KtcsConfig) = XmlChannelSettings(
-            bindAddress = config[KtcsSettings.xmlBindAddress],
-            ordersPort = config[KtcsSettings.xmlOrdersPort],
-            statusPort = config[KtcsSettings.xmlStatusPort],
-            idleTimeout = config[KtcsSettings.xmlOrdersIdleTimeout].milliseconds,
-            inputLimit = config[KtcsSettings.xmlOrdersInputLimit],
-            statusSeparator = config[KtcsSettings.xmlStatusSeparator],
-            scriptsDirectory = Path.of(config[KtcsSettings.xmlScriptsDirectory]),
-            statusBufferSize = config[KtcsSettings.xmlStatusBufferSize],
-            ordersMaxConnections = config[KtcsSettings.xmlOrdersMaxConnections],
-            statusMaxConnections = config[KtcsSettings.xmlStatusMaxConnections],
+            bindAddress = config[XmlConfigKeys.bindAddress],
+            ordersPort = config[XmlConfigKeys.ordersPort],
+            statusPort = config[XmlConfigKeys.statusPort],
+            idleTimeout = config[XmlConfigKeys.ordersIdleTimeout].milliseconds,
+            inputLimit = config[XmlConfigKeys.ordersInputLimit],
+            statusSeparator = config[XmlConfigKeys.statusSeparator],
+            scriptsDirectory = Path.of(config[XmlConfigKeys.scriptsDirectory]),
+            statusBufferSize = config[XmlConfigKeys.statusBufferSize],
+            ordersMaxConnections = config[XmlConfigKeys.ordersMaxConnections],
+            statusMaxConnections = config[XmlConfigKeys.statusMaxConnections],
         )
     }
 }

@@ -3,8 +3,8 @@ package org.ktcs.xmlchannels
 import org.koin.core.module.Module
 import org.koin.dsl.module
 import org.koin.dsl.onClose
-import org.ktcs.kernel.config.KtcsConfig
-import org.ktcs.kernel.extension.ServedAddresses
+import org.ktcs.extension.config.KtcsConfig
+import org.ktcs.extension.ServedAddresses
 
 /**
  * The XML channels' Koin definitions: they start listening when the kernel's Koin application is created (the

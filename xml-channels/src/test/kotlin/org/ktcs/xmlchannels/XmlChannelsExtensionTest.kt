@@ -11,7 +11,7 @@ import org.koin.dsl.koinApplication
 import org.koin.dsl.module
 import org.ktcs.api.service.KernelServices
 import org.ktcs.kernel.config.ConfigLoader
-import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.extension.KtcsExtension
 import org.ktcs.xmlchannels.status.StatusClientSocket
 import java.net.BindException
 import java.net.ConnectException

@@ -22,18 +22,18 @@ import kotlin.math.roundToLong
  *   the kernel per second of its clock, so a faster simulation must not send more of them per second.
  */
 data class LoopbackSettings(
-    val timeFactor: Double = 1.0,
-    val operatingTimeMillis: Long = 5000,
-    val acceleration: Double = 500.0,
-    val deceleration: Double = 500.0,
+    val timeFactor: Double = LoopbackConfigKeys.timeFactor.default,
+    val operatingTimeMillis: Long = LoopbackConfigKeys.operatingTime.default,
+    val acceleration: Double = LoopbackConfigKeys.acceleration.default,
+    val deceleration: Double = LoopbackConfigKeys.deceleration.default,
     val loadOperation: String = "Load cargo",
     val unloadOperation: String = "Unload cargo",
     val rechargeOperation: String = "CHARGE",
-    val rechargePercentPerSecond: Double = 1.0,
-    val energyDrainPercentPerKm: Double = 10.0,
+    val rechargePercentPerSecond: Double = LoopbackConfigKeys.rechargeRate.default,
+    val energyDrainPercentPerKm: Double = LoopbackConfigKeys.energyDrain.default,
     val commandQueueCapacity: Int = 2,
-    val positionReportIntervalMillis: Long = 500,
-    val placeUnpositionedVehicles: Boolean = true,
+    val positionReportIntervalMillis: Long = LoopbackConfigKeys.positionReportInterval.default,
+    val placeUnpositionedVehicles: Boolean = LoopbackConfigKeys.placeUnpositionedVehicles.default,
 ) {
     init {
         require(timeFactor > 0.0 && timeFactor.isFinite()) { "timeFactor must be positive, was $timeFactor" }

@@ -3,7 +3,7 @@ package org.ktcs.e2e.extensions
 import org.koin.core.module.Module
 import org.koin.dsl.module
 import org.ktcs.api.dispatching.Dispatcher
-import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.extension.KtcsExtension
 
 /**
  * An extension whose dispatcher cannot be created. Not listed in this module's services file: ExtensionDirectoryTest

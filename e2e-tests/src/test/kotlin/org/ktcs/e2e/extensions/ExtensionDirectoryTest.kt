@@ -5,7 +5,7 @@ import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.string.shouldNotContain
 import org.ktcs.e2e.KtcsProcess
-import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.extension.KtcsExtension
 import java.nio.file.Files
 import java.nio.file.Path
 import java.util.jar.JarEntry

@@ -7,7 +7,7 @@ import org.ktcs.api.dispatching.Dispatcher
 import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.model.ProcState
 import org.ktcs.kernel.core.KernelCore
-import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.extension.KtcsExtension
 
 /** A replacement dispatcher: every order goes to the idle vehicle with the smallest name. Nothing else. */
 class FirstIdleVehicleDispatcher(private val context: DispatchContext) : Dispatcher {

@@ -1,7 +1,7 @@
 package org.ktcs.kernel.app
 
-import org.ktcs.kernel.config.KtcsSettings
-import org.ktcs.kernel.config.Setting
+import org.ktcs.kernel.config.SettingsCatalogue
+import org.ktcs.extension.config.Setting
 
 /**
  * `docs/configuration.md`, generated from the settings' declarations so it cannot drift from the code:
@@ -10,10 +10,10 @@ import org.ktcs.kernel.config.Setting
 object ConfigReference {
     const val REGENERATE = "./ktcs config reference > docs/configuration.md"
 
-    fun render(settings: List<Setting<*>> = KtcsSettings.all): String = buildString {
+    fun render(settings: List<Setting<*>> = SettingsCatalogue.onClassPath()): String = buildString {
         appendLine("# Configuration reference")
         appendLine()
-        appendLine("<!-- Generated from KtcsSettings by `$REGENERATE`; do not edit by hand. -->")
+        appendLine("<!-- Generated from KtcsSettings and the extensions' settings by `$REGENERATE`; do not edit by hand. -->")
         appendLine()
         appendLine(
             "Settings come from, in rising precedence: the defaults below, the config file (`--config FILE`, " +

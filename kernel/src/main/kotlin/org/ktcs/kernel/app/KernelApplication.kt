@@ -6,16 +6,18 @@ import org.koin.core.logger.Level
 import org.koin.dsl.koinApplication
 import org.koin.dsl.module
 import org.koin.logger.slf4jLogger
-import org.ktcs.kernel.config.KtcsConfig
+import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.kernel.context.RealTimeKernelContext
 import org.ktcs.kernel.core.KernelCore
-import org.ktcs.kernel.extension.ExtensionException
+import org.ktcs.extension.ExtensionException
 import org.ktcs.kernel.extension.ExtensionFailures
-import org.ktcs.kernel.extension.KtcsExtension
-import org.ktcs.kernel.extension.ServedAddresses
+import org.ktcs.extension.KtcsExtension
+import org.ktcs.extension.ServedAddresses
 import org.ktcs.kernel.extension.describe
 import org.ktcs.kernel.extension.from
 import org.ktcs.kernel.kernelModule
+import org.ktcs.kernel.config.KtcsSettings
+import org.ktcs.extension.web.WebServerInfo
 import org.ktcs.kernel.web.KernelVersion
 import org.ktcs.kernel.web.ShutdownRequest
 import org.ktcs.kernel.web.WebServer
@@ -108,6 +110,7 @@ class KernelApplication(
 
     private fun applicationModule() = module {
         single { KernelVersion.ofThisBuild() }
+        single { WebServerInfo(accessKeyRequired = config[KtcsSettings.webAccessKey].isNotEmpty()) }
         single { WebServer(get(), get(), get(), shutdownRequest, getAll()) }
     }
 

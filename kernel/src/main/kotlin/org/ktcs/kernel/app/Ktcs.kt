@@ -1,12 +1,13 @@
 package org.ktcs.kernel.app
 
 import org.ktcs.kernel.bench.Bench
-import org.ktcs.kernel.config.ConfigException
+import org.ktcs.extension.config.ConfigException
 import org.ktcs.kernel.config.ConfigFile
 import org.ktcs.kernel.config.ConfigLoader
-import org.ktcs.kernel.config.KtcsConfig
+import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.kernel.config.KtcsSettings
-import org.ktcs.kernel.extension.ExtensionException
+import org.ktcs.kernel.config.SettingsCatalogue
+import org.ktcs.extension.ExtensionException
 import org.ktcs.kernel.extension.Extensions
 import org.ktcs.kernel.extension.InstalledExtensions
 import org.ktcs.kernel.model.InvalidModelException
@@ -25,7 +26,7 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
     fun run(args: List<String>, awaitShutdown: (() -> Unit)? = null): Int = try {
         when (val command = CommandLine.parse(args)) {
             is Command.Run -> runKernel(command.options, awaitShutdown)
-            is Command.ShowConfig -> 0.also { out.println(ConfigFile.describe(config(command.options))) }
+            is Command.ShowConfig -> 0.also { showConfig(command.options) }
             Command.ConfigTemplate -> 0.also { out.print(ConfigFile.render()) }
             Command.ConfigReference -> 0.also { out.print(ConfigReference.render()) }
             is Command.Simulate -> simulate(command.options)
@@ -52,9 +53,8 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
         // Reading the model is most of the start-up's own work (Jackson's Kotlin module reflects on every element
         // class); it runs while the configuration, logging and extensions are set up.
         val loading = CompletableFuture.supplyAsync { PlantModelLoader.load(options.model) }
-        val config = config(options)
+        val (config, installed) = configAndExtensions(options)
         Logging.apply(config)
-        val installed = extensions(config)
         val model = try {
             loading.join()
         } catch (failed: CompletionException) {
@@ -76,14 +76,13 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
     private fun simulate(options: SimulateOptions): Int {
         // The same configuration and timing rules as `ktcs` itself; --time-factor is loopback.timeFactor.
         val timeFactor = listOfNotNull(options.timeFactor?.let { "loopback.timeFactor=$it" })
-        val config = config(options.run.copy(overrides = options.run.overrides + timeFactor))
+        val (config, installed) = configAndExtensions(options.run.copy(overrides = options.run.overrides + timeFactor))
         Logging.apply(config)
         Logging.quietNotifications()
         val generated = options.grid?.let { (w, h) -> GeneratedPlant("grid", w, h, options.vehicles ?: 10) }
             ?: options.warehouse?.let { (w, h) -> GeneratedPlant("warehouse", w, h, options.vehicles ?: 10) }
         val plant = generated?.let(ModelTools::generated) ?: PlantModelLoader.load(options.run.model).model
         val model = Fleet.withVehicles(plant, options.vehicles ?: plant.vehicles.size.coerceAtLeast(1))
-        val installed = extensions(config)
         val report = withContextClassLoader(installed.classLoader) {
             SimulationRunner(
                 model,
@@ -99,10 +98,23 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
         return if (report.ordersFinished == report.ordersCreated && clean) 0 else EXIT_FAILURE
     }
 
-    /** The extensions on the class path and in `extensions.directory` (required there if set explicitly). */
-    private fun extensions(config: KtcsConfig): InstalledExtensions {
+    private fun showConfig(options: RunOptions) {
+        val (config, installed) = configAndExtensions(options)
+        out.println(ConfigFile.describe(config, SettingsCatalogue.of(installed.extensions)))
+    }
+
+    /**
+     * The extensions on the class path and in `extensions.directory` (required there if set explicitly), and the
+     * configuration, whose keys include the extensions' settings: kTCS's own settings are read first (skipping the
+     * others) to find the extensions, then all of them.
+     */
+    private fun configAndExtensions(options: RunOptions): Pair<KtcsConfig, InstalledExtensions> {
+        val file = options.configFile ?: DEFAULT_CONFIG.takeIf { Files.isRegularFile(it) }
+        val own = ConfigLoader(KtcsSettings.all).load(file, environment, options.overrides, ignoreUnknown = true)
         val setting = KtcsSettings.extensionsDirectory
-        return Extensions.load(Path.of(config[setting]), required = config.sourceOf(setting) != "default")
+        val installed = Extensions.load(Path.of(own[setting]), required = own.sourceOf(setting) != "default")
+        val config = ConfigLoader(SettingsCatalogue.of(installed.extensions)).load(file, environment, options.overrides)
+        return config to installed
     }
 
     /**
@@ -118,11 +130,6 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
         } finally {
             thread.contextClassLoader = previous
         }
-    }
-
-    private fun config(options: RunOptions): KtcsConfig {
-        val file = options.configFile ?: DEFAULT_CONFIG.takeIf { Files.isRegularFile(it) }
-        return ConfigLoader().load(file, environment, options.overrides)
     }
 
     /** The one-line message for errors a user caused, or `null` for bugs, which keep their stack trace. */

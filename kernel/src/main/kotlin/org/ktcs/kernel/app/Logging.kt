@@ -2,7 +2,7 @@ package org.ktcs.kernel.app
 
 import ch.qos.logback.classic.Level
 import ch.qos.logback.classic.Logger
-import org.ktcs.kernel.config.KtcsConfig
+import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.kernel.config.KtcsSettings
 import org.slf4j.LoggerFactory
 

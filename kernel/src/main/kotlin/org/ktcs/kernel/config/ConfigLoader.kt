@@ -1,5 +1,8 @@
 package org.ktcs.kernel.config
 
+import org.ktcs.extension.config.ConfigException
+import org.ktcs.extension.config.KtcsConfig
+import org.ktcs.extension.config.Setting
 import java.nio.file.Files
 import java.nio.file.Path
 
@@ -7,39 +10,55 @@ import java.nio.file.Path
  * Builds the effective configuration from, in rising precedence: the defaults, the config file, environment
  * variables (`KTCS_` + the key in capitals with `.` as `_`, e.g. `KTCS_WEB_PORT`) and `--set key=value` options.
  * Unknown keys and bad values are rejected with a [ConfigException] naming them.
+ *
+ * [settings] are the keys it knows, by default kTCS's and those of the extensions on the class path; the launcher
+ * passes those of the extensions it installed (see [SettingsCatalogue]).
  */
-class ConfigLoader(private val settings: List<Setting<*>> = KtcsSettings.all) {
+class ConfigLoader(private val settings: List<Setting<*>> = SettingsCatalogue.onClassPath()) {
     private val byKey = settings.associateBy { it.key }
     private val byEnvironmentName = settings.associateBy { environmentName(it.key) }
 
-    fun load(file: Path?, environment: Map<String, String>, overrides: List<String>): KtcsConfig {
+    /**
+     * The configuration from [file], [environment] and [overrides]. With [ignoreUnknown], keys this loader does not
+     * know are skipped instead of rejected: the launcher reads kTCS's own settings that way first, to find the
+     * extensions, whose settings it then reads with a loader that knows them.
+     */
+    fun load(
+        file: Path?,
+        environment: Map<String, String>,
+        overrides: List<String>,
+        ignoreUnknown: Boolean = false,
+    ): KtcsConfig {
         val values = mutableMapOf<String, Any>()
         val sources = mutableMapOf<String, String>()
-        fun put(setting: Setting<*>, raw: String, source: String) {
+        fun put(setting: Setting<*>?, raw: String, source: String) {
+            if (setting == null) return
             values[setting.key] = setting.parse(raw, source)
             sources[setting.key] = source
         }
         file?.let { path ->
-            readFile(path).forEach { (line, key, raw) -> put(known(key, "$path:$line"), raw, "$path:$line") }
+            readFile(path).forEach { (line, key, raw) ->
+                put(known(key, "$path:$line", ignoreUnknown), raw, "$path:$line")
+            }
         }
         environment.filterKeys {
             it.startsWith(ENV_PREFIX) && it !in LAUNCHER_VARIABLES
         }.toSortedMap().forEach { (name, raw) ->
             val setting = byEnvironmentName[name]
-                ?: throw ConfigException(
+                ?: if (ignoreUnknown) return@forEach else throw ConfigException(
                     "unknown environment variable $name: kTCS knows ${byEnvironmentName.keys.joinToString()}",
                 )
             put(setting, raw, "environment variable $name")
         }
         overrides.forEach { option ->
             val (key, raw) = splitAssignment(option) ?: throw ConfigException("--set '$option': expected key=value")
-            put(known(key, "--set $option"), raw, "--set $key")
+            put(known(key, "--set $option", ignoreUnknown), raw, "--set $key")
         }
         return KtcsConfig(values, sources)
     }
 
-    private fun known(key: String, source: String): Setting<*> = byKey[key]
-        ?: throw ConfigException(
+    private fun known(key: String, source: String, ignoreUnknown: Boolean): Setting<*>? = byKey[key]
+        ?: if (ignoreUnknown) null else throw ConfigException(
             "$source: unknown setting '$key'" + (
                 suggestionFor(key)?.let {
                     " (did you mean '$it'?)"

@@ -1,6 +1,14 @@
 package org.ktcs.kernel.config
 
 import org.ktcs.api.model.IntegrationLevel
+import org.ktcs.extension.config.Setting
+import org.ktcs.extension.config.booleanSetting
+import org.ktcs.extension.config.doubleSetting
+import org.ktcs.extension.config.enumListSetting
+import org.ktcs.extension.config.enumSetting
+import org.ktcs.extension.config.intSetting
+import org.ktcs.extension.config.longSetting
+import org.ktcs.extension.config.stringSetting
 import org.ktcs.kernel.dispatching.CandidatePriority
 import org.ktcs.kernel.dispatching.OrderPriority
 import org.ktcs.kernel.dispatching.VehiclePriority
@@ -8,7 +16,10 @@ import org.ktcs.kernel.routing.EdgeEvaluator
 import org.ktcs.kernel.routing.RoutingAlgorithm
 import org.ktcs.kernel.vehicles.ResourceManagement
 
-/** Every setting kTCS knows. A key that is not listed here is rejected wherever it appears. */
+/**
+ * Every setting of kTCS itself. Extensions declare theirs in [org.ktcs.extension.KtcsExtension.settings]; a key that
+ * neither lists is rejected wherever it appears (see [SettingsCatalogue]).
+ */
 object KtcsSettings {
     private const val MAX_PORT = 65535
 
@@ -55,55 +66,6 @@ object KtcsSettings {
         1..1_000_000,
         "Events queued for one WebSocket client; a client that falls further behind is told it missed events and " +
             "gets fresh snapshots.",
-    )
-    val xmlOrdersPort =
-        intSetting("xml.orders.port", 55555, 0..MAX_PORT, "TCP port of the XML order channel (0: any free port).")
-    val xmlStatusPort =
-        intSetting("xml.status.port", 44444, 0..MAX_PORT, "TCP port of the XML status channel (0: any free port).")
-    val xmlBindAddress =
-        stringSetting("xml.bindAddress", "0.0.0.0", "Address the XML order and status channels listen on.")
-    val xmlOrdersIdleTimeout = longSetting(
-        "xml.orders.idleTimeout",
-        10_000,
-        1L..3_600_000L,
-        "Milliseconds an XML order channel client has to send its whole telegram; a slower one is closed without a " +
-            "receipt.",
-    )
-    val xmlOrdersMaxConnections = intSetting(
-        "xml.orders.maxConnections",
-        100,
-        1..100_000,
-        "XML order channel connections served at once; more are refused with a line saying so.",
-    )
-    val xmlStatusMaxConnections = intSetting(
-        "xml.status.maxConnections",
-        100,
-        1..100_000,
-        "XML status channel clients served at once; more are refused with a line saying so.",
-    )
-    val xmlOrdersInputLimit =
-        intSetting("xml.orders.inputLimit", 102_400, 1..67_108_864, "The largest XML order telegram, in bytes.")
-    val xmlStatusSeparator =
-        stringSetting("xml.status.separator", "|", "Written after every message on the XML status channel.")
-    val xmlStatusBufferSize = intSetting(
-        "xml.status.bufferSize",
-        1000,
-        1..1_000_000,
-        "Status messages queued for one client; a client that falls further behind is dropped.",
-    )
-    val xmlScriptsDirectory =
-        stringSetting("xml.scriptsDirectory", "scripts", "Directory of the .tcs batch scripts that XML telegrams name.")
-
-    val loopbackPlaceUnpositionedVehicles = booleanSetting(
-        "loopback.placeUnpositionedVehicles",
-        true,
-        "Place a simulated vehicle without loopback:initialPosition on a free park position (else a free point) " +
-            "when it starts, and say where in a notification.",
-    )
-    val loopbackTimeFactor = positiveDoubleSetting(
-        "loopback.timeFactor",
-        1.0,
-        "How much faster than real time the simulated loopback vehicles move (2.0: twice as fast).",
     )
     val logLevel = enumSetting(
         "log.level",
@@ -236,59 +198,6 @@ object KtcsSettings {
         "Share of full energy at which a charging vehicle may take orders again (openTCS 4.x recovery evaluator).",
     )
 
-    val loopbackOperatingTime = longSetting(
-        "loopback.operatingTime",
-        5000,
-        0L..3_600_000L,
-        "Simulated milliseconds an operation takes (vehicle property loopback:operatingTime overrides).",
-    )
-    val loopbackAcceleration =
-        positiveDoubleSetting(
-            "loopback.acceleration",
-            500.0,
-            "Simulated acceleration in mm/s² (vehicle property " +
-                "loopback:acceleration overrides).",
-        )
-    val loopbackDeceleration =
-        positiveDoubleSetting(
-            "loopback.deceleration",
-            500.0,
-            "Simulated deceleration in mm/s² (vehicle property " +
-                "loopback:deceleration overrides).",
-        )
-    val loopbackRechargeRate =
-        doubleSetting(
-            "loopback.rechargePercentPerSecond",
-            1.0,
-            0.0..100.0,
-            "Percent of energy a charging simulated " +
-                "vehicle gains per second.",
-        )
-    val loopbackEnergyDrain = doubleSetting(
-        "loopback.energyDrainPercentPerKm",
-        10.0,
-        0.0..10_000.0,
-        "Percent of energy a simulated vehicle uses per kilometre driven (openTCS's never drains).",
-    )
-    val loopbackPositionReportInterval = longSetting(
-        "loopback.positionReportInterval",
-        500,
-        0L..60_000L,
-        "Milliseconds of real (kernel-clock) time between precise-position reports while driving, whatever loopback.timeFactor (0: only at points).",
-    )
-    val overviewVehicleTheme = stringSetting(
-        "overview.vehicleTheme",
-        "default-vehicles",
-        "Name of the theme the browser overview draws vehicles with (default-vehicles, high-contrast-vehicles, or " +
-            "one an extension adds).",
-    )
-    val overviewLocationTheme = stringSetting(
-        "overview.locationTheme",
-        "default-locations",
-        "Name of the theme the browser overview draws locations with (default-locations, high-contrast-locations, " +
-            "or one an extension adds).",
-    )
-
     val extensionsDirectory = stringSetting(
         "extensions.directory",
         "extensions",
@@ -312,16 +221,6 @@ object KtcsSettings {
     ) + TlsSettings.all + listOf(
         webMaxRequestBodySize,
         webSocketBufferSize,
-        xmlOrdersPort,
-        xmlStatusPort,
-        xmlBindAddress,
-        xmlOrdersIdleTimeout,
-        xmlOrdersInputLimit,
-        xmlOrdersMaxConnections,
-        xmlStatusSeparator,
-        xmlStatusBufferSize,
-        xmlStatusMaxConnections,
-        xmlScriptsDirectory,
         logLevel,
         kernelEnableDrivers,
         kernelInitialIntegrationLevel,
@@ -343,16 +242,6 @@ object KtcsSettings {
         dispatcherRechargeIdleVehicles,
         dispatcherKeepRecharging,
         dispatcherRecoveryThreshold,
-        loopbackPlaceUnpositionedVehicles,
-        loopbackTimeFactor,
-        loopbackOperatingTime,
-        loopbackAcceleration,
-        loopbackDeceleration,
-        loopbackRechargeRate,
-        loopbackEnergyDrain,
-        loopbackPositionReportInterval,
-        overviewVehicleTheme,
-        overviewLocationTheme,
     ) + WatchdogSettings.all + extensionsDirectory + dataDirectory
 }
 

@@ -1,5 +1,8 @@
 package org.ktcs.kernel.config
 
+import org.ktcs.extension.config.Setting
+import org.ktcs.extension.config.stringSetting
+
 /** How the web server serves HTTPS (`web.tls.*`); all empty: plain HTTP. Listed in [KtcsSettings.all]. */
 object TlsSettings {
     val keyStore = stringSetting(

@@ -1,5 +1,9 @@
 package org.ktcs.kernel.config
 
+import org.ktcs.extension.config.Setting
+import org.ktcs.extension.config.booleanSetting
+import org.ktcs.extension.config.longSetting
+
 /** openTCS's operations watchdogs (`watchdog.*`), each a user notification. Listed in [KtcsSettings.all]. */
 object WatchdogSettings {
     private val MILLIS_PER_DAY = 0L..86_400_000L

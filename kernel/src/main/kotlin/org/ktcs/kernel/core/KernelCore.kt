@@ -30,7 +30,7 @@ import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.model.PlantModelValidator
 import org.ktcs.kernel.orders.OrderLifecycle
 import org.ktcs.kernel.orders.TransportOrderFactory
-import org.ktcs.kernel.orders.XmlSafeText
+import org.ktcs.api.model.XmlSafeText
 import org.ktcs.kernel.vehicles.VehicleControllers
 import org.ktcs.kernel.vehicles.VehicleEnvironment
 import org.ktcs.kernel.workingset.HistoryCodes

@@ -1,6 +1,8 @@
 package org.ktcs.kernel.extension
 
-import org.ktcs.kernel.config.ConfigException
+import org.ktcs.extension.ExtensionException
+import org.ktcs.extension.KtcsExtension
+import org.ktcs.extension.config.ConfigException
 import java.net.BindException
 import java.nio.file.Path
 

@@ -1,5 +1,6 @@
 package org.ktcs.kernel.extension
 
+import org.ktcs.extension.ExtensionException
 import java.io.IOException
 import java.net.URLClassLoader
 import java.nio.file.Files
@@ -25,13 +26,15 @@ class ExtensionJars private constructor(val jars: List<Path>, val classLoader: C
     /** The jars whose `META-INF/services` file for extensions names [className]. */
     fun jarsListing(className: String): List<Path> = jars.filter { jar ->
         JarFile(jar.toFile()).use { file ->
-            val entry = file.getJarEntry(SERVICE_FILE) ?: return@use false
-            file.getInputStream(entry).bufferedReader().readLines().any { it.substringBefore('#').trim() == className }
+            listOf(Extensions.SERVICE_FILE, Extensions.OLD_SERVICE_FILE).any { name ->
+                val entry = file.getJarEntry(name) ?: return@any false
+                file.getInputStream(entry).bufferedReader().readLines()
+                    .any { it.substringBefore('#').trim() == className }
+            }
         }
     }
 
     companion object {
-        private val SERVICE_FILE = "META-INF/services/${KtcsExtension::class.java.name}"
 
         /**
          * Opens the jars in [directory]. A missing directory means no extension jars, unless it was [required]

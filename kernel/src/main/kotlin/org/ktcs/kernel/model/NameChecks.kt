@@ -1,7 +1,7 @@
 package org.ktcs.kernel.model
 
 import org.ktcs.api.model.PlantObject
-import org.ktcs.kernel.orders.XmlSafeText
+import org.ktcs.api.model.XmlSafeText
 
 /** Names identify objects of every kind at once, as in openTCS, so a point and a path must not share one. */
 internal fun nameProblems(index: ModelIndex): List<ModelProblem> {

@@ -1,5 +1,6 @@
 package org.ktcs.kernel.orders
 
+import org.ktcs.api.model.XmlSafeText
 import org.ktcs.api.error.IllegalStateChangeException
 import org.ktcs.api.error.InvalidRequestException
 import org.ktcs.api.error.ObjectExistsException

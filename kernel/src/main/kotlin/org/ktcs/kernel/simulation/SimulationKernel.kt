@@ -6,7 +6,7 @@ import org.koin.core.module.Module
 import org.koin.dsl.koinApplication
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.service.KernelServices
-import org.ktcs.kernel.config.KtcsConfig
+import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.kernel.context.KernelContext
 import org.ktcs.kernel.context.RealTimeKernelContext
 import org.ktcs.kernel.context.VirtualTimeKernelContext

@@ -9,12 +9,11 @@ import org.ktcs.api.order.Destination
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.api.routing.Router
-import org.ktcs.kernel.config.KtcsConfig
-import org.ktcs.kernel.config.KtcsSettings
+import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.kernel.context.RealTimeKernelContext
 import org.ktcs.kernel.context.VirtualTimeKernelContext
 import org.ktcs.kernel.dispatching.VehicleAvailability
-import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.extension.KtcsExtension
 import org.ktcs.kernel.routerConfiguration
 import org.ktcs.kernel.routing.DefaultRouter
 import org.ktcs.kernel.scheduling.DefaultScheduler
@@ -42,7 +41,7 @@ class SimulationRunner(
     private val realTime: Boolean = false,
 ) {
     private val random = Random(seed)
-    private val timeFactor = config[KtcsSettings.loopbackTimeFactor]
+    private val timeFactor = loopbackSetting("loopback.timeFactor") as Double
     private val sources = model.locations.filter {
         model.locationType(it.type)?.allowedOperations?.contains(loadOperation) ==
             true
@@ -127,6 +126,13 @@ class SimulationRunner(
         )
     }
 
+    /** The loopback extension's setting [key] as configured: the simulated vehicles are loopback vehicles. */
+    private fun loopbackSetting(key: String): Any {
+        val setting = extensions.flatMap { it.settings }.firstOrNull { it.key == key }
+        requireNotNull(setting) { "the simulation drives loopback vehicles, but no installed extension declares $key" }
+        return config[setting]
+    }
+
     private fun TransportOrderEvent.isSimulationOrderEnding(): Boolean {
         val order = current ?: return false
         return order.name.startsWith(ORDER_PREFIX) && order.state.isFinal && previous?.state?.isFinal == false
@@ -137,7 +143,7 @@ class SimulationRunner(
             val (load, unload) = order.destinations
             Trip(load.target, load.operation, unload.target, unload.operation)
         }
-        return LowerBound(model, config[KtcsSettings.loopbackOperatingTime])
+        return LowerBound(model, loopbackSetting("loopback.operatingTime") as Long)
             .seconds(trips, model.vehicles.size) ?: 0.0
     }
 

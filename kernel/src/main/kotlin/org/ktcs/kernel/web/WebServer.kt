@@ -18,7 +18,8 @@ import io.ktor.server.websocket.WebSockets
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
 import org.ktcs.api.service.KernelServices
-import org.ktcs.kernel.config.KtcsConfig
+import org.ktcs.extension.config.KtcsConfig
+import org.ktcs.extension.web.WebContribution
 import org.ktcs.kernel.config.KtcsSettings
 import org.ktcs.kernel.events.SubscriberTooSlowException
 import org.ktcs.kernel.web.docs.ApiDocument

@@ -1,6 +1,6 @@
 package org.ktcs.kernel.web
 
-import org.ktcs.kernel.config.KtcsConfig
+import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.kernel.config.TlsSettings
 import java.nio.file.Files
 import java.nio.file.Path

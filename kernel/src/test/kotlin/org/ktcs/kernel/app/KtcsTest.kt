@@ -90,11 +90,11 @@ class KtcsTest : FunSpec({
     }
 
     test("config prints every setting with its value and source") {
-        val run = ktcs("config", "--set", "web.port=8080", environment = mapOf("KTCS_XML_ORDERS_PORT" to "5000"))
+        val run = ktcs("config", "--set", "web.port=8080", environment = mapOf("KTCS_LOG_LEVEL" to "WARN"))
         run.exitCode shouldBe 0
         run.out.lines().shouldContainAll(
             "web.port = 8080  # --set web.port",
-            "xml.orders.port = 5000  # environment variable KTCS_XML_ORDERS_PORT",
+            "log.level = WARN  # environment variable KTCS_LOG_LEVEL",
             "web.bindAddress = 0.0.0.0  # default",
         )
     }

@@ -6,6 +6,8 @@ import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.collections.shouldNotContain
 import io.kotest.matchers.string.shouldContain
+import org.ktcs.extension.ExtensionException
+import org.ktcs.extension.KtcsExtension
 import java.nio.file.Files
 import java.nio.file.Path
 import java.util.jar.JarEntry

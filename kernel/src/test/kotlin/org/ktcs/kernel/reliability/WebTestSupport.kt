@@ -12,7 +12,7 @@ import org.ktcs.kernel.app.KernelApplication
 import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.kernel.core.StepDriverFactory
-import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.extension.KtcsExtension
 import org.slf4j.LoggerFactory
 import java.net.URI
 import java.net.http.HttpClient

@@ -20,7 +20,7 @@ import org.koin.dsl.module
 import org.ktcs.api.driver.VehicleDriverFactory
 import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.kernel.core.StepDriverFactory
-import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.extension.KtcsExtension
 
 private val stepVehicles = object : KtcsExtension {
     override val name = "step vehicles"

@@ -9,7 +9,7 @@ import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.retry
 import kotlinx.coroutines.flow.update
 import org.ktcs.api.event.KernelEvent
-import org.ktcs.kernel.orders.XmlSafeText
+import org.ktcs.api.model.XmlSafeText
 import org.ktcs.xmlchannels.Connection
 import org.slf4j.LoggerFactory
 import java.util.concurrent.ConcurrentHashMap

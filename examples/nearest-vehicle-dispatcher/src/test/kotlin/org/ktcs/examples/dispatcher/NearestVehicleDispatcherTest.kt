@@ -65,7 +65,7 @@ class NearestVehicleDispatcherTest : FunSpec({
 })
 
 /** The vehicle with the cheapest route from its start position to [point], as kTCS's router computes it. */
-private fun nearestVehicleTo(model: PlantModel, point: String, config: org.ktcs.kernel.config.KtcsConfig): String =
+private fun nearestVehicleTo(model: PlantModel, point: String, config: org.ktcs.extension.config.KtcsConfig): String =
     SimulationKernel(model, config, listOf(LoopbackExtension().module())).use { kernel ->
         val context = kernel.core.dispatchContext
         kernel.context.runUntil { context.vehicles().all { it.currentPosition != null } }

@@ -7,7 +7,7 @@ import org.ktcs.api.overview.OverviewContribution
 import org.ktcs.api.overview.OverviewPanel
 import org.ktcs.api.overview.OverviewTheme
 import org.ktcs.api.overview.ThemeTarget
-import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.extension.KtcsExtension
 
 // snippet:overview-extension
 /**

@@ -23,7 +23,7 @@ import org.ktcs.kernel.app.KernelApplication
 import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.kernel.core.StepDriver
-import org.ktcs.kernel.extension.KtcsExtension
+import org.ktcs.extension.KtcsExtension
 import org.ktcs.kernel.web.WebApiClient
 import org.ktcs.kernel.web.WsTestClient
 import java.net.URI

@@ -1,4 +1,4 @@
-package org.ktcs.kernel.web
+package org.ktcs.extension.web
 
 import io.ktor.server.routing.Route
 
@@ -7,6 +7,6 @@ import io.ktor.server.routing.Route
  * one). Bind implementations in the extension's Koin module; each is installed once at the root of the routing tree,
  * outside `/v1` and its access key.
  */
-fun interface WebContribution {
-    fun install(root: Route)
+public fun interface WebContribution {
+    public fun install(root: Route)
 }

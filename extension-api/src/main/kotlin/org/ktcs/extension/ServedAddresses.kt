@@ -1,9 +1,9 @@
-package org.ktcs.kernel.extension
+package org.ktcs.extension
 
 /**
  * Something an extension serves on the network, for the launcher's "kTCS ready" line, e.g. "XML orders tcp://…".
  * Bind an implementation in the extension's Koin module; it is asked once everything has started.
  */
-fun interface ServedAddresses {
-    fun addresses(): List<String>
+public fun interface ServedAddresses {
+    public fun addresses(): List<String>
 }

@@ -1,4 +1,4 @@
-package org.ktcs.kernel.orders
+package org.ktcs.api.model
 
 import org.ktcs.api.error.InvalidRequestException
 
@@ -6,11 +6,11 @@ import org.ktcs.api.error.InvalidRequestException
  * Names and property values travel in XML (the status channel, plant-model files) and JSON alike, so only characters
  * XML 1.0 can carry are accepted: tab, line feed, carriage return and everything from U+0020 on except the
  * surrogate-free non-characters U+FFFE and U+FFFF (paired surrogates are fine). Refused at creation, a name can
- * never stop a channel later.
+ * never stop a channel later. The kernel checks every name it accepts; channels use [printable] for messages.
  */
-object XmlSafeText {
+public object XmlSafeText {
     /** The first character XML cannot carry, described as `U+0001 at position 4`, or `null` if there is none. */
-    fun firstUnsafe(text: String): String? {
+    public fun firstUnsafe(text: String): String? {
         var index = 0
         while (index < text.length) {
             val code = text.codePointAt(index)
@@ -21,18 +21,18 @@ object XmlSafeText {
     }
 
     /** Throws [InvalidRequestException] naming [what] and the character if [text] holds one XML cannot carry. */
-    fun require(text: String, what: String) {
+    public fun require(text: String, what: String) {
         firstUnsafe(text)?.let { throw InvalidRequestException("$what contains a character XML cannot carry: $it") }
     }
 
     /** Checks the keys and values of [properties], naming [owner] in the error. */
-    fun requireProperties(properties: Map<String, String>, owner: String) = properties.forEach { (key, value) ->
+    public fun requireProperties(properties: Map<String, String>, owner: String): Unit = properties.forEach { (key, value) ->
         require(key, "$owner: property key '${printable(key)}'")
         require(value, "$owner: value of property '${printable(key)}'")
     }
 
     /** [text] with every character XML cannot carry replaced by `?`, for error messages. */
-    fun printable(text: String): String = buildString {
+    public fun printable(text: String): String = buildString {
         text.codePoints().forEach { appendCodePoint(if (isAllowed(it)) it else '?'.code) }
     }
 

@@ -1,18 +1,19 @@
-package org.ktcs.kernel.config
+package org.ktcs.extension.config
 
 /**
- * One configuration key with its type, default and meaning. The catalogue of all settings is [KtcsSettings];
- * the documented config file and the README's configuration table are checked against it.
+ * One configuration key with its type, default and meaning. kTCS declares its own in the kernel's `KtcsSettings`,
+ * an extension in [org.ktcs.extension.KtcsExtension.settings]; the documented config file and the README's
+ * configuration table are checked against both.
  */
-class Setting<T : Any>(
-    val key: String,
-    val default: T,
-    val description: String,
+public class Setting<T : Any>(
+    public val key: String,
+    public val default: T,
+    public val description: String,
     private val parser: (String) -> T?,
     private val constraint: Constraint<T> = Constraint.none(),
 ) {
     /** Parses [raw] or throws [ConfigException] naming this key, the value and what is expected. */
-    fun parse(raw: String, source: String): T {
+    public fun parse(raw: String, source: String): T {
         val value = parser(raw.trim())
             ?: throw ConfigException("$source: bad value '$raw' for $key: expected ${typeName()}")
         constraint.problem(value)?.let { throw ConfigException("$source: bad value '$raw' for $key: $it") }
@@ -20,7 +21,7 @@ class Setting<T : Any>(
     }
 
     /** The default as it is written in a config file. */
-    fun defaultText(): String = default.toString()
+    public fun defaultText(): String = default.toString()
 
     private fun typeName(): String = when (default) {
         is Int -> "a whole number"
@@ -36,39 +37,39 @@ class Setting<T : Any>(
 }
 
 /** A rule a parsed value must follow, with a description for the error message. */
-fun interface Constraint<T> {
+public fun interface Constraint<T> {
     /** Why [value] is not acceptable, or `null` if it is. */
-    fun problem(value: T): String?
+    public fun problem(value: T): String?
 
-    companion object {
-        fun <T> none(): Constraint<T> = Constraint { null }
+    public companion object {
+        public fun <T> none(): Constraint<T> = Constraint { null }
 
-        fun intRange(range: IntRange): Constraint<Int> =
+        public fun intRange(range: IntRange): Constraint<Int> =
             Constraint { if (it in range) null else "must be between ${range.first} and ${range.last}" }
 
-        fun positive(): Constraint<Double> =
+        public fun positive(): Constraint<Double> =
             Constraint { if (it > 0.0 && it.isFinite()) null else "must be a positive number" }
 
-        fun notBlank(): Constraint<String> = Constraint { if (it.isNotBlank()) null else "must not be empty" }
+        public fun notBlank(): Constraint<String> = Constraint { if (it.isNotBlank()) null else "must not be empty" }
     }
 }
 
-fun intSetting(key: String, default: Int, range: IntRange, description: String): Setting<Int> =
+public fun intSetting(key: String, default: Int, range: IntRange, description: String): Setting<Int> =
     Setting(key, default, description, String::toIntOrNull, Constraint.intRange(range))
 
-fun positiveDoubleSetting(key: String, default: Double, description: String): Setting<Double> =
+public fun positiveDoubleSetting(key: String, default: Double, description: String): Setting<Double> =
     Setting(key, default, description, String::toDoubleOrNull, Constraint.positive())
 
-fun stringSetting(key: String, default: String, description: String): Setting<String> =
+public fun stringSetting(key: String, default: String, description: String): Setting<String> =
     Setting(key, default, description, { it }, Constraint.notBlank())
 
-fun booleanSetting(key: String, default: Boolean, description: String): Setting<Boolean> =
+public fun booleanSetting(key: String, default: Boolean, description: String): Setting<Boolean> =
     Setting(key, default, description, String::toBooleanStrictOrNull)
 
-fun longSetting(key: String, default: Long, range: LongRange, description: String): Setting<Long> =
+public fun longSetting(key: String, default: Long, range: LongRange, description: String): Setting<Long> =
     Setting(key, default, description, String::toLongOrNull, inRange(range.first, range.last))
 
-fun doubleSetting(
+public fun doubleSetting(
     key: String,
     default: Double,
     range: ClosedFloatingPointRange<Double>,
@@ -85,7 +86,7 @@ private fun <T : Comparable<T>> inRange(low: T, high: T): Constraint<T> =
     Constraint { if (it in low..high) null else "must be between $low and $high" }
 
 /** A comma-separated list of enum constants, e.g. `IDLE_FIRST,BY_ENERGY_LEVEL`; written back the same way. */
-inline fun <reified E : Enum<E>> enumListSetting(
+public inline fun <reified E : Enum<E>> enumListSetting(
     key: String,
     default: List<E>,
     description: String,
@@ -97,11 +98,11 @@ inline fun <reified E : Enum<E>> enumListSetting(
     })
 
 /** A list of enum constants that prints as the config file writes it. */
-data class EnumList<E : Enum<E>>(val values: List<E>) {
+public data class EnumList<E : Enum<E>>(public val values: List<E>) {
     override fun toString(): String = values.joinToString(",")
 }
 
-inline fun <reified E : Enum<E>> enumSetting(key: String, default: E, description: String): Setting<E> =
+public inline fun <reified E : Enum<E>> enumSetting(key: String, default: E, description: String): Setting<E> =
     Setting(key, default, description, { raw ->
         enumValues<E>().firstOrNull { it.name.equals(raw, ignoreCase = true) }
     })

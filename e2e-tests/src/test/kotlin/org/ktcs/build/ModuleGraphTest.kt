@@ -1,0 +1,86 @@
+package org.ktcs.build
+
+import io.kotest.assertions.withClue
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.shouldBe
+
+/**
+ * Extensions build on the contract (`api`, `extension-api`), not on the kernel: no module's main class path may reach
+ * `kernel`, directly or through another module (tests may use it). The Gradle files mirror the poms
+ * ([BuildFilesAgreeTest]), so checking the poms checks both builds.
+ */
+class ModuleGraphTest : FunSpec({
+    test("no module but the kernel has the kernel on its main class path") {
+        val build = MavenBuild.read(repositoryRoot())
+        withClue("Modules whose main code may use the kernel; build them on extension-api instead:") {
+            kernelOnMainClassPath(build).shouldBeEmpty()
+        }
+    }
+
+    test("api stays free of Ktor, Koin and Jackson; extension-api builds on api alone among the modules") {
+        val build = MavenBuild.read(repositoryRoot())
+        build.dependencies("api").map { it.module }.filter { it.startsWith(":") || FRAMEWORKS.containsMatchIn(it) }
+            .shouldBeEmpty()
+        build.dependencies("extension-api").map { it.module }.filter { it.startsWith(":") } shouldBe listOf(":api")
+    }
+
+    context("the check reports") {
+        val root = """
+            <project><groupId>org.ktcs</groupId><artifactId>ktcs-parent</artifactId><version>1</version>
+            <modules><module>kernel</module><module>spi</module><module>driver</module><module>panel</module></modules>
+            </project>
+        """.trimIndent()
+
+        fun pom(artifact: String, vararg dependencies: Pair<String, String>) =
+            "<project><artifactId>ktcs-$artifact</artifactId><dependencies>" +
+                dependencies.joinToString("") { (on, scope) ->
+                    "<dependency><groupId>org.ktcs</groupId><artifactId>ktcs-$on</artifactId><scope>$scope</scope>" +
+                        "</dependency>"
+                } + "</dependencies></project>"
+
+        test("a module that depends on the kernel directly or through another module") {
+            val build = MavenBuild(
+                root,
+                mapOf(
+                    "kernel" to pom("kernel", "spi" to "compile"),
+                    "spi" to pom("spi"),
+                    "driver" to pom("driver", "kernel" to "compile"),
+                    "panel" to pom("panel", "driver" to "runtime"),
+                ),
+            )
+            kernelOnMainClassPath(build) shouldBe listOf("driver -> :kernel", "panel -> :driver -> :kernel")
+        }
+
+        test("nothing when the kernel is a test dependency only") {
+            val build = MavenBuild(
+                root,
+                mapOf(
+                    "kernel" to pom("kernel", "spi" to "compile"),
+                    "spi" to pom("spi"),
+                    "driver" to pom("driver", "spi" to "compile", "kernel" to "test"),
+                    "panel" to pom("panel", "driver" to "compile"),
+                ),
+            )
+            kernelOnMainClassPath(build).shouldBeEmpty()
+        }
+    }
+})
+
+/** Each module (other than the kernel) whose compile or runtime dependencies reach the kernel, with the path. */
+private fun kernelOnMainClassPath(build: MavenBuild): List<String> = build.modules.filter { it != KERNEL }
+    .mapNotNull { module -> pathToKernel(build, module, listOf(module))?.joinToString(" -> ") }
+
+private fun pathToKernel(build: MavenBuild, module: String, path: List<String>): List<String>? =
+    build.dependencies(module)
+        .filter { it.scope == "compile" || it.scope == "runtime" }
+        .map { it.module }
+        .filter { it.startsWith(":") && it !in path }
+        .firstNotNullOfOrNull { dependency ->
+            if (dependency == ":$KERNEL") path + dependency
+            else pathToKernel(build, dependency.removePrefix(":"), path + dependency)
+        }
+
+private const val KERNEL = "kernel"
+
+private val FRAMEWORKS = Regex("^(io\\.ktor|io\\.insert-koin|com\\.fasterxml\\.jackson)")

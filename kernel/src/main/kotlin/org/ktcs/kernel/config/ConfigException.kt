@@ -1,4 +1,0 @@
-package org.ktcs.kernel.config
-
-/** A configuration problem; the message is one line that names the key or the file. */
-class ConfigException(message: String) : RuntimeException(message)
