@@ -55,23 +55,54 @@ public interface Scheduler : KernelComponent {
 
     /** What every waiting client asked for and has not got yet, by client name, oldest request first. */
     public fun pendingAllocations(): Map<String, List<Set<String>>>
+
+    /**
+     * Who each waiting client waits for: by waiter name, the clients standing in its way, each with the resources it
+     * waits for them to give up. The kernel's deadlock watchdog looks for cycles in it and breaks one by routing a
+     * vehicle around the contested resources; it asks only this interface, so it keeps working with any scheduler.
+     *
+     * The default derives it from [allocations] and [pendingAllocations]: a client waits for every holder of a
+     * resource of its oldest pending request (its later requests cannot be granted before that one anyway). A
+     * scheduler that holds requests back for other reasons too (blocks, deadlock avoidance) should add those waits,
+     * or the watchdog will not see the deadlocks they take part in. Called in the kernel context.
+     */
+    public fun waitsFor(): Map<String, Map<String, Set<String>>> =
+        SchedulerWaits.of(allocations(), pendingAllocations())
+
+    /**
+     * Whether [client]'s claim makes it wait, through others, for itself: the first step of its claimed route leads
+     * into vehicles that wait for what it stands on. A claim cannot be refused, so the vehicle then routes around
+     * that step before it starts. The default, `false`, suits a scheduler that does not look ahead along claims.
+     * Called in the kernel context.
+     */
+    public fun claimIsBlocked(client: SchedulerClient): Boolean = false
 }
 
-/** A vehicle as the scheduler sees it. */
-public interface SchedulerClient {
-    /** The vehicle's name. */
-    public val name: String
-
+/** How waits follow from what clients hold and request, as [Scheduler.waitsFor] derives them by default. */
+public object SchedulerWaits {
     /**
-     * The scheduler granted [resources]. Return `false` if the client no longer wants them (e.g. its order was
-     * withdrawn meanwhile); the scheduler then frees them again.
+     * For each client with a pending request, the holders of the resources of its oldest one (its later requests
+     * cannot be granted before that one anyway), each with those resources; clients that wait for nobody are left out.
      */
-    public fun onAllocationGranted(resources: Set<String>): Boolean
+    public fun of(
+        allocations: Map<String, Set<String>>,
+        pending: Map<String, List<Set<String>>>,
+    ): Map<String, Map<String, Set<String>>> {
+        val holders = HashMap<String, MutableSet<String>>()
+        allocations.forEach { (client, resources) -> resources.forEach { holders.getOrPut(it, ::HashSet) += client } }
+        return pending.mapValues { (waiter, requests) -> blockers(waiter, requests.firstOrNull().orEmpty(), holders) }
+            .filterValues { it.isNotEmpty() }
+    }
 
-    /**
-     * What the client will still hold besides [resources] once it has driven up to them: the resources its length
-     * still covers behind it. Deadlock avoidance counts them as held after a grant of [resources]; the default,
-     * nothing, suits vehicles that are short compared with the paths.
-     */
-    public fun heldAfter(resources: Set<String>): Set<String> = emptySet()
+    private fun blockers(
+        waiter: String,
+        request: Set<String>,
+        holders: Map<String, Set<String>>,
+    ): Map<String, Set<String>> {
+        val blockers = HashMap<String, MutableSet<String>>()
+        for (resource in request) {
+            for (holder in holders[resource].orEmpty() - waiter) blockers.getOrPut(holder, ::HashSet) += resource
+        }
+        return blockers
+    }
 }

@@ -4,7 +4,6 @@ import org.ktcs.api.event.NotificationLevel
 import org.ktcs.api.kernel.Cancellable
 import org.ktcs.kernel.scheduling.Deadlock
 import org.ktcs.kernel.scheduling.DeadlockDetector
-import org.ktcs.kernel.scheduling.DefaultScheduler
 import org.ktcs.kernel.scheduling.WaitForGraph
 import org.slf4j.LoggerFactory
 
@@ -48,9 +47,8 @@ class DeadlockWatchdog(private val kernel: KernelCore) {
 
     /** Finds and handles the current deadlocks. */
     fun check() {
-        // The default scheduler also knows waits caused by same-direction blocks, which its allocations do not show.
-        val graph = (kernel.scheduler as? DefaultScheduler)?.waitForGraph()
-            ?: WaitForGraph.of(kernel.scheduler.allocations(), kernel.scheduler.pendingAllocations())
+        // Asks the scheduler's interface only, so a replaced scheduler keeps the watchdog working.
+        val graph = WaitForGraph(kernel.scheduler.waitsFor())
         val deadlocks = DeadlockDetector.detect(graph)
         val allocations by lazy { kernel.scheduler.allocations() }
         val held = { vehicle: String -> allocations[vehicle].orEmpty() }

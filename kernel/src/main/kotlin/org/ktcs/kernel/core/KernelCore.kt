@@ -53,7 +53,7 @@ class KernelCore(
     driverFactories: List<VehicleDriverFactory>,
     val options: KernelOptions = KernelOptions(),
 ) {
-    val events = EventBus()
+    val events = EventBus(context)
     val notifications = Notifications(events, context)
     val plant = PlantState(model, events)
     val orders = TransportOrderPool(events, context)
@@ -78,10 +78,13 @@ class KernelCore(
     /** The dispatcher in use (the default one, or one an extension put in its place). */
     val dispatcher: Dispatcher get() = dispatcherProvider()
 
-    /** The DISPATCHABLE orders, oldest first; kept up to date from order events. */
-    val dispatchable = LinkedHashMap<String, TransportOrder>()
+    // The DISPATCHABLE orders, oldest first; kept up to date from order events (track), changed nowhere else.
+    private val dispatchable = LinkedHashMap<String, TransportOrder>()
     private var sweep: Cancellable? = null
     val watchdog = DeadlockWatchdog(this)
+
+    /** What an operator or host may ask directly (assign now, intended vehicle, thresholds, locks), with its rules. */
+    val requests = OperatorRequests(this)
     private val operationsWatchdog = OperationsWatchdog(this)
 
     init {
@@ -118,6 +121,9 @@ class KernelCore(
     }
 
     fun dispatch() = trigger.request()
+
+    /** The DISPATCHABLE orders, oldest first (a read-only view). */
+    fun dispatchableOrders(): Collection<TransportOrder> = dispatchable.values
 
     fun nameTaken(name: String): Boolean =
         orders.contains(name) || sequences.get(name) != null || plant.staticModel().objectNamed(name) != null

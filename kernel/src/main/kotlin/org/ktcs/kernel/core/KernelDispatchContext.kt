@@ -32,7 +32,7 @@ class KernelDispatchContext(private val kernel: KernelCore) : DispatchContext {
     override fun vehicles(): Collection<Vehicle> = kernel.plant.vehicles()
 
     override fun dispatchableOrders(): Collection<TransportOrder> =
-        kernel.dispatchable.values.filter { it.name !in reservations }
+        kernel.dispatchableOrders().filter { it.name !in reservations }
 
     override fun transportOrder(name: String): TransportOrder? = kernel.orders.get(name)
 

@@ -3,6 +3,7 @@ package org.ktcs.kernel.events
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.channels.ReceiveChannel
 import org.ktcs.api.event.KernelEvent
+import org.ktcs.kernel.context.KernelContext
 import java.util.concurrent.CopyOnWriteArrayList
 
 /**
@@ -12,8 +13,11 @@ import java.util.concurrent.CopyOnWriteArrayList
  * ([subscribe]: web clients, XML status channel, tests) gets a bounded buffer of its own; one that falls too far
  * behind is cut off with [SubscriberTooSlowException] instead of slowing the kernel or the other subscribers, and
  * can subscribe again and start from a fresh snapshot.
+ *
+ * Every change of kernel state is published here, so with the kernel's [context] the bus also checks that changes
+ * happen in that context: with JVM assertions on (`-ea`, as in every test run) a publish from another thread fails.
  */
-class EventBus {
+class EventBus(private val context: KernelContext? = null) {
     private val listeners = CopyOnWriteArrayList<(KernelEvent) -> Unit>()
     private val subscribers = CopyOnWriteArrayList<Channel<KernelEvent>>()
 
@@ -43,6 +47,9 @@ class EventBus {
      * attached to it as suppressed), since a failing kernel listener is a defect that must not go unnoticed.
      */
     fun publish(event: KernelEvent) {
+        assert(context?.isInKernelContext() != false) {
+            "kernel state changed outside the kernel context (thread ${Thread.currentThread().name}): $event"
+        }
         pending.addLast(event)
         if (delivering) return
         delivering = true

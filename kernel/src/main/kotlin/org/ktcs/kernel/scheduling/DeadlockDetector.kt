@@ -1,5 +1,7 @@
 package org.ktcs.kernel.scheduling
 
+import org.ktcs.api.scheduling.SchedulerWaits
+
 /**
  * Vehicles each waiting for what the next one holds, the last for the first, so none of them can ever move on.
  *
@@ -13,9 +15,9 @@ data class DeadlockResolution(val vehicle: String, val resourcesToAvoid: Set<Str
 
 /** Finds deadlocks among the clients of a scheduler, and proposes how to break them. */
 object DeadlockDetector {
-    /** The deadlocks in a scheduler's [allocations] and [pending] requests (see [WaitForGraph.of]). */
+    /** The deadlocks in a scheduler's [allocations] and [pending] requests (see [SchedulerWaits.of]). */
     fun detect(allocations: Map<String, Set<String>>, pending: Map<String, List<Set<String>>>): List<Deadlock> =
-        detect(WaitForGraph.of(allocations, pending))
+        detect(WaitForGraph(SchedulerWaits.of(allocations, pending)))
 
     /** The deadlocks of [graph], one per cycle it reports (see [WaitForGraph.cycles]). */
     fun detect(graph: WaitForGraph): List<Deadlock> = graph.cycles().map { cycle ->

@@ -124,20 +124,22 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     /** The direction in which the users of each SAME_DIRECTION_ONLY block entered it, where known, by block name. */
     fun blockDirections(): Map<String, String> = occupancy.directions.directions()
 
+    /** [waitsFor] as a graph, for the deadlock detector. */
+    fun waitForGraph(): WaitForGraph = WaitForGraph(waitsFor())
+
     /**
-     * Whom each client's oldest pending request waits for, including the users of blocks it may not enter yet. A
-     * client driving away from a resource it was granted more ahead of does not count as blocking it: it gives the
-     * resource up as it drives.
+     * Whom each client's oldest pending request waits for, including the users of blocks it may not enter yet and,
+     * for a grant deadlock avoidance holds back, the vehicles in its way. A client driving away from a resource it
+     * was granted more ahead of does not count as blocking it: it gives the resource up as it drives.
      */
-    fun waitForGraph(): WaitForGraph = WaitForGraph(
+    override fun waitsFor(): Map<String, Map<String, Set<String>>> =
         pending.heads()
             .associate { request ->
                 request.client.name to (occupancy.blockersOf(request.client.name, request) + heldBackBy(request))
                     .mapValues { (blocker, resources) -> stillBlocking(blocker, resources) }
                     .filterValues { it.isNotEmpty() }
             }
-            .filterValues { it.isNotEmpty() },
-    )
+            .filterValues { it.isNotEmpty() }
 
     // A grant held back for longer than HELD_BACK_REPORT_MILLIS waits for whoever holds what it would need next: if
     // those wait for it in turn (vehicles meeting head-on on a two-way stretch), the watchdog sees a deadlock and
@@ -169,7 +171,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
      * Whether [client]'s claim makes it wait, through others, for itself: its first step leads into vehicles that
      * wait for what it stands on. A claim cannot be refused, so the client should route around that step.
      */
-    fun claimIsBlocked(client: SchedulerClient): Boolean = safety.waitsForItself(client.name)
+    override fun claimIsBlocked(client: SchedulerClient): Boolean = safety.waitsForItself(client.name)
 
     /** What [client] still needs as deadlock avoidance sees it: its claimed route ahead and its way out. */
     fun needs(client: String): Set<String> = safety.needs(client)

@@ -1,8 +1,9 @@
 package org.ktcs.kernel.scheduling
 
 /**
- * Who waits for whom: for each waiting client, the clients standing in its way, each with the resources involved.
- * Its size is that of the waiting clients, not of the plant model.
+ * Who waits for whom: for each waiting client, the clients standing in its way, each with the resources involved
+ * (a scheduler's [org.ktcs.api.scheduling.Scheduler.waitsFor]). Its size is that of the waiting clients, not of the
+ * plant model.
  */
 class WaitForGraph(val edges: Map<String, Map<String, Set<String>>>) {
     /** The resources [waiter] wants and [holder] stands in the way with, or none if it does not wait for it. */
@@ -15,35 +16,6 @@ class WaitForGraph(val edges: Map<String, Map<String, Set<String>>>) {
      * exponentially.
      */
     fun cycles(): List<List<String>> = CycleSearch(edges).run()
-
-    companion object {
-        /**
-         * The graph of a scheduler's [allocations] and [pending] requests. A client waits for every holder of a
-         * resource in its oldest pending request: its later requests cannot be granted before that one anyway.
-         */
-        fun of(allocations: Map<String, Set<String>>, pending: Map<String, List<Set<String>>>): WaitForGraph {
-            val holders = HashMap<String, MutableSet<String>>()
-            allocations.forEach { (client, resources) ->
-                resources.forEach { holders.getOrPut(it, ::HashSet) += client }
-            }
-            val edges = pending.mapValues { (waiter, requests) -> blockers(waiter, requests.firstOrNull(), holders) }
-            return WaitForGraph(edges.filterValues { it.isNotEmpty() })
-        }
-
-        private fun blockers(
-            waiter: String,
-            request: Set<String>?,
-            holders: Map<String, Set<String>>,
-        ): Map<String, Set<String>> {
-            val blockers = HashMap<String, MutableSet<String>>()
-            for (resource in request.orEmpty()) {
-                for (holder in holders[resource].orEmpty() - waiter) {
-                    blockers.getOrPut(holder, ::HashSet) += resource
-                }
-            }
-            return blockers
-        }
-    }
 }
 
 private class CycleSearch(private val edges: Map<String, Map<String, Set<String>>>) {

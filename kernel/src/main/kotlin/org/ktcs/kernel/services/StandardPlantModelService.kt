@@ -11,10 +11,8 @@ class StandardPlantModelService(private val kernel: KernelCore) : PlantModelServ
         kernel.setPathLocked(path, locked)
     }
 
-    override suspend fun setLocationLocked(location: String, locked: Boolean) = kernel.context.call {
-        kernel.plant.setLocationLocked(location, locked)
-        kernel.dispatch()
-    }
+    override suspend fun setLocationLocked(location: String, locked: Boolean) =
+        kernel.context.call { kernel.requests.setLocationLocked(location, locked) }
 
     override suspend fun replacePlantModel(model: PlantModel) = kernel.context.call {
         kernel.replacePlantModel(model)

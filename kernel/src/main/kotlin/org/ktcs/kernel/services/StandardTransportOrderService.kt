@@ -1,6 +1,5 @@
 package org.ktcs.kernel.services
 
-import org.ktcs.api.error.IllegalStateChangeException
 import org.ktcs.api.order.OrderSequence
 import org.ktcs.api.order.OrderSequenceCreation
 import org.ktcs.api.order.TransportOrder
@@ -8,7 +7,6 @@ import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.api.service.TransportOrderService
 import org.ktcs.kernel.core.KernelCore
-import org.ktcs.kernel.orders.OrderLifecycle
 
 class StandardTransportOrderService(private val kernel: KernelCore) : TransportOrderService {
     override suspend fun createTransportOrder(creation: TransportOrderCreation): TransportOrder =
@@ -20,17 +18,8 @@ class StandardTransportOrderService(private val kernel: KernelCore) : TransportO
         kernel.orders.all().filter { intendedVehicle == null || it.intendedVehicle == intendedVehicle }
     }
 
-    override suspend fun setIntendedVehicle(order: String, vehicle: String?) = kernel.context.call {
-        val current = kernel.orders.require(order)
-        if (current.state !in OrderLifecycle.UNASSIGNED) {
-            throw IllegalStateChangeException(
-                "transport order '$order' is ${current.state}; its intended vehicle can only change before it is assigned",
-            )
-        }
-        vehicle?.let { kernel.plant.vehicle(it) }
-        kernel.orders.update(order) { it.copy(intendedVehicle = vehicle) }
-        kernel.dispatch()
-    }
+    override suspend fun setIntendedVehicle(order: String, vehicle: String?) =
+        kernel.context.call { kernel.requests.setIntendedVehicle(order, vehicle) }
 
     override suspend fun createOrderSequence(creation: OrderSequenceCreation): OrderSequence =
         kernel.context.call { kernel.createOrderSequence(creation) }

@@ -2,7 +2,6 @@ package org.ktcs.kernel.services
 
 import org.ktcs.api.driver.DriverMessage
 import org.ktcs.api.driver.DriverPanelView
-import org.ktcs.api.error.InvalidRequestException
 import org.ktcs.api.event.DriverEvent
 import org.ktcs.api.model.AcceptableOrderType
 import org.ktcs.api.model.EnergyLevelThresholdSet
@@ -36,29 +35,8 @@ class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
     override suspend fun setAcceptableOrderTypes(vehicle: String, types: Set<AcceptableOrderType>) =
         update(vehicle) { it.copy(acceptableOrderTypes = types) }
 
-    override suspend fun setEnergyLevelThresholdSet(vehicle: String, thresholds: EnergyLevelThresholdSet) {
-        val values =
-            listOf(thresholds.critical, thresholds.good, thresholds.sufficientlyRecharged, thresholds.fullyRecharged)
-        if (values.any {
-                it !in 0..100
-            }
-        ) {
-            throw InvalidRequestException(
-                "energy thresholds of vehicle '$vehicle' must be between 0 and 100: $thresholds",
-            )
-        }
-        if (thresholds.critical > thresholds.good) {
-            throw InvalidRequestException(
-                "vehicle '$vehicle': critical ${thresholds.critical} is above good ${thresholds.good}",
-            )
-        }
-        if (thresholds.sufficientlyRecharged > thresholds.fullyRecharged) {
-            throw InvalidRequestException(
-                "vehicle '$vehicle': sufficiently recharged ${thresholds.sufficientlyRecharged} is above fully recharged ${thresholds.fullyRecharged}",
-            )
-        }
-        update(vehicle) { it.copy(energyLevelThresholdSet = thresholds) }
-    }
+    override suspend fun setEnergyLevelThresholdSet(vehicle: String, thresholds: EnergyLevelThresholdSet) =
+        kernel.context.call { kernel.requests.setEnergyLevelThresholds(vehicle, thresholds) }
 
     override suspend fun setEnvelopeKey(vehicle: String, key: String?) = update(vehicle) { it.copy(envelopeKey = key) }
 

@@ -41,7 +41,8 @@ class SimulationRunner(
     private val realTime: Boolean = false,
 ) {
     private val random = Random(seed)
-    private val timeFactor = loopbackSetting("loopback.timeFactor") as Double
+    // Vehicles of another driver than the loopback one are taken to run on the kernel clock.
+    private val timeFactor = loopbackSetting("loopback.timeFactor") as Double? ?: 1.0
     private val sources = model.locations.filter {
         model.locationType(it.type)?.allowedOperations?.contains(loadOperation) ==
             true
@@ -126,12 +127,9 @@ class SimulationRunner(
         )
     }
 
-    /** The loopback extension's setting [key] as configured: the simulated vehicles are loopback vehicles. */
-    private fun loopbackSetting(key: String): Any {
-        val setting = extensions.flatMap { it.settings }.firstOrNull { it.key == key }
-        requireNotNull(setting) { "the simulation drives loopback vehicles, but no installed extension declares $key" }
-        return config[setting]
-    }
+    /** The loopback driver's setting [key] as configured, or `null` without the loopback extension. */
+    private fun loopbackSetting(key: String): Any? =
+        extensions.flatMap { it.settings }.firstOrNull { it.key == key }?.let { config[it] }
 
     private fun TransportOrderEvent.isSimulationOrderEnding(): Boolean {
         val order = current ?: return false
@@ -143,7 +141,7 @@ class SimulationRunner(
             val (load, unload) = order.destinations
             Trip(load.target, load.operation, unload.target, unload.operation)
         }
-        return LowerBound(model, loopbackSetting("loopback.operatingTime") as Long)
+        return LowerBound(model, loopbackSetting("loopback.operatingTime") as Long? ?: 0L)
             .seconds(trips, model.vehicles.size) ?: 0.0
     }
 

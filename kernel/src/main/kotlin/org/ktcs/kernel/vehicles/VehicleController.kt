@@ -426,7 +426,7 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
      * returns whether it rerouted.
      */
     private fun avoidBlockedStart(): Boolean {
-        val scheduler = env.scheduler() as? org.ktcs.kernel.scheduling.DefaultScheduler ?: return false
+        val scheduler = env.scheduler()
         if (sent.isNotEmpty() || !scheduler.claimIsBlocked(this)) return false
         val position = env.plant.vehicle(name).currentPosition
         val first = remaining.firstOrNull() ?: return false

@@ -4,6 +4,7 @@ import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.shouldBe
+import org.ktcs.api.scheduling.SchedulerWaits
 
 class DeadlockDetectorTest : FunSpec({
     test("two vehicles each waiting for what the other holds are a deadlock") {
@@ -55,7 +56,7 @@ class DeadlockDetectorTest : FunSpec({
             "v2" to listOf(setOf("A", "A2")),
             "v3" to listOf(setOf("B", "X")),
         )
-        val graph = WaitForGraph.of(allocations, pending)
+        val graph = WaitForGraph(SchedulerWaits.of(allocations, pending))
         val deadlock = DeadlockDetector.detect(graph).single()
 
         DeadlockDetector.resolve(deadlock, graph) shouldBe DeadlockResolution("v3", setOf("B"))

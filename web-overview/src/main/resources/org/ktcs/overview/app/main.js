@@ -55,8 +55,8 @@ async function accessKey(required) {
 }
 
 function askForKey() {
-  const dialog = document.getElementById('key-dialog');
-  const input = document.getElementById('key-input');
+  const dialog = /** @type {HTMLDialogElement} */ (document.getElementById('key-dialog'));
+  const input = /** @type {HTMLInputElement} */ (document.getElementById('key-input'));
   return new Promise((resolve) => {
     dialog.onclose = () => resolve(input.value);
     dialog.showModal();
@@ -147,12 +147,13 @@ function installPlantControls(plant) {
   document.getElementById('fit').onclick = () => { plant.userMoved = false; plant.fit(); };
   document.getElementById('zoom-in').onclick = () => { plant.userMoved = true; plant.zoom(1.4); };
   document.getElementById('zoom-out').onclick = () => { plant.userMoved = true; plant.zoom(1 / 1.4); };
-  document.getElementById('show-labels').onchange = (event) => plant.setLabels(event.target.checked);
+  document.getElementById('show-labels').onchange = (event) =>
+    plant.setLabels(/** @type {HTMLInputElement} */ (event.target).checked);
 }
 
 // What the browser tests and the drawing benchmark read; also handy in the browser's console.
 function exposeForDiagnostics(plant, client, themes) {
-  window.ktcsOverview = {
+  /** @type {any} */ (window).ktcsOverview = {
     drawn: () => ({ ...plant.lastDrawn, vehicles: plant.vehicles.drawn.size }),
     /** The resources drawn as held (allocated or claimed), the paths drawn as routes ahead and as highlighted route. */
     drawnResources: () => [...plant.vehicles.drawnResources].sort(),

@@ -79,7 +79,10 @@ function thresholds(ktcs, name, run, vehicle) {
     el('button', { type: 'button', 'data-action': 'save-thresholds', onclick: save }, 'Save'));
 }
 
-/** What is wrong with [critical, good, sufficiently, fully] recharged thresholds, or null. */
+/**
+ * What is wrong with [critical, good, sufficiently, fully] recharged thresholds, or null.
+ * @param {number[]} thresholds
+ */
 export function thresholdProblem([critical, good, sufficiently, fully]) {
   const all = [critical, good, sufficiently, fully];
   if (all.some((value) => !Number.isInteger(value) || value < 0 || value > 100)) {

@@ -32,6 +32,8 @@ export class PlantView {
     canvas.after(this.overlay);
     this.themes = themes;
     this.onSelect = onSelect;
+    /** @type {((vehicle: string | null) => void) | undefined} Told which vehicle the view follows, if any. */
+    this.onFollowChange = undefined;
     this.view = new ViewTransform();
     this.geometry = null;
     this.hiddenLayers = new Set();

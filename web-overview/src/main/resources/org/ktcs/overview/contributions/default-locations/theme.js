@@ -1,6 +1,7 @@
 // kTCS's default location theme: the symbol follows the location's representation (or else its type's), as the
 // openTCS plant overview draws them.
 
+/** @type {Array<[RegExp, { fill: string, stroke: string, symbol: string }]>} */
 const BY_REPRESENTATION = [
   [/^LOAD_TRANSFER/, { fill: '#b3e5fc', stroke: '#01579b', symbol: 'square' }],
   [/^RECHARGE/, { fill: '#fff59d', stroke: '#f57f17', symbol: 'triangle' }],
