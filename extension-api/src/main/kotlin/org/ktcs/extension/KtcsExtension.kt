@@ -20,7 +20,9 @@ import org.ktcs.extension.config.Setting
  *
  * What it may contribute: its [settings], [org.ktcs.api.driver.VehicleDriverFactory]s,
  * [org.ktcs.extension.web.WebContribution]s, [org.ktcs.api.overview.OverviewContribution]s, [ServedAddresses] and
- * replacements for the strategies above.
+ * replacements for the strategies above. Bind contributions of which every extension may add some (addresses, web
+ * routes, overview contributions) under a qualifier of your own (`named("my-extension")`): Koin keeps
+ * only the last unnamed definition of a type, so an unnamed one would replace another extension's or be replaced.
  */
 public interface KtcsExtension {
     /** A short name for logs and error messages. */

@@ -1,6 +1,7 @@
 package org.ktcs.xmlchannels
 
 import org.koin.core.module.Module
+import org.koin.core.qualifier.named
 import org.koin.dsl.module
 import org.koin.dsl.onClose
 import org.ktcs.extension.config.KtcsConfig
@@ -14,7 +15,8 @@ fun xmlChannelsModule(settings: (KtcsConfig) -> XmlChannelSettings = XmlChannelS
     single(createdAtStart = true) {
         XmlChannels(get(), settings(getOrNull<KtcsConfig>() ?: KtcsConfig.defaults())).start()
     } onClose { it?.close() }
-    single<ServedAddresses> {
+    // Named: every extension may add addresses, and Koin keeps only the last unnamed definition of a type.
+    single<ServedAddresses>(named("xml-channels")) {
         ServedAddresses {
             val channels = get<XmlChannels>()
             val host = settings(getOrNull<KtcsConfig>() ?: KtcsConfig.defaults()).bindAddress

@@ -33,6 +33,24 @@ class ExtensionDirectoryTest : FunSpec({
         }
     }
 
+    test("an extension jar declares settings of its own, set like kTCS's; an undeclared key is still refused") {
+        val extensions = Files.createTempDirectory("ktcs-extensions")
+        writeJar(extensions.resolve("greeting.jar"), GreetingExtension::class.java)
+        KtcsProcess(
+            *(local + "extensions.directory=$extensions" + "greeting.text=moin").flatMap { listOf("--set", it) }
+                .toTypedArray(),
+        ).use { ktcs ->
+            ktcs.awaitLine("kTCS ready") shouldContain "; greeting moin; "
+        }
+        KtcsProcess(
+            *(local + "extensions.directory=$extensions" + "greeting.txt=moin").flatMap { listOf("--set", it) }
+                .toTypedArray(),
+        ).use { ktcs ->
+            ktcs.awaitExit() shouldBe 1
+            ktcs.output() shouldContain "unknown setting 'greeting.txt' (did you mean 'greeting.text'?)"
+        }
+    }
+
     test("a jar listing a class it does not contain is named, exit 1") {
         val extensions = Files.createTempDirectory("ktcs-extensions")
         val jar = extensions.resolve("vendor.jar")
