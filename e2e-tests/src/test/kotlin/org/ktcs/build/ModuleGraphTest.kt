@@ -77,8 +77,11 @@ private fun pathToKernel(build: MavenBuild, module: String, path: List<String>):
         .map { it.module }
         .filter { it.startsWith(":") && it !in path }
         .firstNotNullOfOrNull { dependency ->
-            if (dependency == ":$KERNEL") path + dependency
-            else pathToKernel(build, dependency.removePrefix(":"), path + dependency)
+            if (dependency == ":$KERNEL") {
+                path + dependency
+            } else {
+                pathToKernel(build, dependency.removePrefix(":"), path + dependency)
+            }
         }
 
 private const val KERNEL = "kernel"

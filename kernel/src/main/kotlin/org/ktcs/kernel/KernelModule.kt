@@ -65,7 +65,9 @@ fun kernelModule(config: KtcsConfig, model: PlantModel, context: KernelContext):
         )
     }
     single<KernelServices> { StandardKernelServices(get()) }
-    single<InstalledDriverPanels> { InstalledDriverPanels { driver -> get<KernelCore>().controllers.factory(driver)?.panel } }
+    single<InstalledDriverPanels> {
+        InstalledDriverPanels { driver -> get<KernelCore>().controllers.factory(driver)?.panel }
+    }
 }
 
 fun kernelOptions(config: KtcsConfig) = KernelOptions(

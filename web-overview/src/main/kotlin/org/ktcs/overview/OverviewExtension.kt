@@ -3,9 +3,9 @@ package org.ktcs.overview
 import org.koin.core.qualifier.named
 import org.koin.dsl.module
 import org.ktcs.api.overview.OverviewContribution
-import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.extension.InstalledDriverPanels
 import org.ktcs.extension.KtcsExtension
+import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.extension.web.WebContribution
 import org.ktcs.extension.web.WebServerInfo
 

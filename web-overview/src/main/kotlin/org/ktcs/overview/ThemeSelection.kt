@@ -15,7 +15,11 @@ data class ThemeSelection(val vehicleTheme: String, val locationTheme: String) {
         private fun checked(name: String, target: ThemeTarget, contributions: Contributions): String {
             val known = contributions.themes(target).map { it.name }
             if (name !in known) {
-                val key = if (target == ThemeTarget.VEHICLES) OverviewConfigKeys.vehicleTheme else OverviewConfigKeys.locationTheme
+                val setting = when (target) {
+                    ThemeTarget.VEHICLES -> OverviewConfigKeys.vehicleTheme
+                    ThemeTarget.LOCATIONS -> OverviewConfigKeys.locationTheme
+                }
+                val key = setting.key
                 throw ConfigException(
                     "$key: unknown ${target.name.lowercase()} theme '$name'; known: ${known.joinToString()}",
                 )

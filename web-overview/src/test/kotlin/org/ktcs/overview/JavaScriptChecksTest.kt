@@ -55,7 +55,9 @@ private object Npm {
         val lock = module.resolve("package-lock.json")
         if (Files.exists(marker) && Files.getLastModifiedTime(marker) >= Files.getLastModifiedTime(lock)) return
         val result = runOrNull(module, "npm", "ci", "--no-audit", "--no-fund")
-            ?: skip("node and npm are not on the PATH: install Node.js 20+ to type-check and lint the overview's JavaScript")
+            ?: skip(
+                "node and npm are not on the PATH: install Node.js 20+ to type-check and lint the overview's JavaScript",
+            )
         if (result.exitCode != 0) skip("npm ci failed (is the npm registry reachable?):\n${result.output}")
     }
 

@@ -11,9 +11,9 @@ import kotlinx.serialization.json.jsonArray
 import kotlinx.serialization.json.jsonObject
 import kotlinx.serialization.json.jsonPrimitive
 import org.ktcs.api.overview.OverviewPanel
+import org.ktcs.extension.ExtensionException
 import org.ktcs.extension.config.ConfigException
 import org.ktcs.kernel.config.ConfigLoader
-import org.ktcs.extension.ExtensionException
 import java.net.URI
 import java.net.http.HttpClient
 import java.net.http.WebSocket

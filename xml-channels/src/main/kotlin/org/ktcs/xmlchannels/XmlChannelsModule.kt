@@ -4,8 +4,8 @@ import org.koin.core.module.Module
 import org.koin.core.qualifier.named
 import org.koin.dsl.module
 import org.koin.dsl.onClose
-import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.extension.ServedAddresses
+import org.ktcs.extension.config.KtcsConfig
 
 /**
  * The XML channels' Koin definitions: they start listening when the kernel's Koin application is created (the

@@ -10,8 +10,8 @@ import kotlinx.coroutines.withTimeout
 import org.koin.dsl.koinApplication
 import org.koin.dsl.module
 import org.ktcs.api.service.KernelServices
-import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.extension.KtcsExtension
+import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.xmlchannels.status.StatusClientSocket
 import java.net.BindException
 import java.net.ConnectException

@@ -4,8 +4,8 @@ import org.koin.core.module.Module
 import org.koin.dsl.bind
 import org.koin.dsl.module
 import org.ktcs.api.driver.VehicleDriverFactory
-import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.extension.KtcsExtension
+import org.ktcs.extension.config.KtcsConfig
 
 // snippet:declared-settings
 /** Contributes the loopback driver factory to the kernel, set up from the `loopback.*` settings. */

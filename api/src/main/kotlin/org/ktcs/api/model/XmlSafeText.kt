@@ -26,7 +26,10 @@ public object XmlSafeText {
     }
 
     /** Checks the keys and values of [properties], naming [owner] in the error. */
-    public fun requireProperties(properties: Map<String, String>, owner: String): Unit = properties.forEach { (key, value) ->
+    public fun requireProperties(
+        properties: Map<String, String>,
+        owner: String,
+    ): Unit = properties.forEach { (key, value) ->
         require(key, "$owner: property key '${printable(key)}'")
         require(value, "$owner: value of property '${printable(key)}'")
     }

@@ -19,7 +19,9 @@ class ConfigDocumentationTest : FunSpec({
     val settings = SettingsCatalogue.onClassPath()
 
     test("the settings of the shipped extensions are among them") {
-        settings.map { it.key } shouldContainAll listOf("xml.orders.port", "loopback.timeFactor", "overview.vehicleTheme")
+        settings.map {
+            it.key
+        } shouldContainAll listOf("xml.orders.port", "loopback.timeFactor", "overview.vehicleTheme")
     }
 
     test("config/ktcs.conf lists every setting with its default and description") {

@@ -6,8 +6,8 @@ import org.ktcs.api.dispatching.DispatchContext
 import org.ktcs.api.dispatching.Dispatcher
 import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.model.ProcState
-import org.ktcs.kernel.core.KernelCore
 import org.ktcs.extension.KtcsExtension
+import org.ktcs.kernel.core.KernelCore
 
 /** A replacement dispatcher: every order goes to the idle vehicle with the smallest name. Nothing else. */
 class FirstIdleVehicleDispatcher(private val context: DispatchContext) : Dispatcher {

@@ -3,8 +3,8 @@ package org.ktcs.e2e.extensions
 import org.koin.core.module.Module
 import org.koin.core.qualifier.named
 import org.koin.dsl.module
-import org.ktcs.extension.ServedAddresses
 import org.ktcs.extension.KtcsExtension
+import org.ktcs.extension.ServedAddresses
 import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.extension.config.stringSetting
 
@@ -18,7 +18,9 @@ class GreetingExtension : KtcsExtension {
     override val settings = listOf(GREETING)
 
     override fun module(): Module = module {
-        single<ServedAddresses>(named("greeting")) { ServedAddresses { listOf("greeting ${get<KtcsConfig>()[GREETING]}") } }
+        single<ServedAddresses>(named("greeting")) {
+            ServedAddresses { listOf("greeting ${get<KtcsConfig>()[GREETING]}") }
+        }
     }
 
     companion object {

@@ -1,7 +1,7 @@
 package org.ktcs.kernel.app
 
-import org.ktcs.kernel.config.SettingsCatalogue
 import org.ktcs.extension.config.Setting
+import org.ktcs.kernel.config.SettingsCatalogue
 
 /**
  * `docs/configuration.md`, generated from the settings' declarations so it cannot drift from the code:
@@ -13,7 +13,9 @@ object ConfigReference {
     fun render(settings: List<Setting<*>> = SettingsCatalogue.onClassPath()): String = buildString {
         appendLine("# Configuration reference")
         appendLine()
-        appendLine("<!-- Generated from KtcsSettings and the extensions' settings by `$REGENERATE`; do not edit by hand. -->")
+        appendLine(
+            "<!-- Generated from KtcsSettings and the extensions' settings by `$REGENERATE`; do not edit by hand. -->",
+        )
         appendLine()
         appendLine(
             "Settings come from, in rising precedence: the defaults below, the config file (`--config FILE`, " +

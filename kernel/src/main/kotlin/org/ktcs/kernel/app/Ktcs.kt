@@ -1,13 +1,13 @@
 package org.ktcs.kernel.app
 
-import org.ktcs.kernel.bench.Bench
+import org.ktcs.extension.ExtensionException
 import org.ktcs.extension.config.ConfigException
+import org.ktcs.extension.config.KtcsConfig
+import org.ktcs.kernel.bench.Bench
 import org.ktcs.kernel.config.ConfigFile
 import org.ktcs.kernel.config.ConfigLoader
-import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.kernel.config.KtcsSettings
 import org.ktcs.kernel.config.SettingsCatalogue
-import org.ktcs.extension.ExtensionException
 import org.ktcs.kernel.extension.Extensions
 import org.ktcs.kernel.extension.InstalledExtensions
 import org.ktcs.kernel.model.InvalidModelException

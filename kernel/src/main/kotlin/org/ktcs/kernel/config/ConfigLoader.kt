@@ -45,9 +45,13 @@ class ConfigLoader(private val settings: List<Setting<*>> = SettingsCatalogue.on
             it.startsWith(ENV_PREFIX) && it !in LAUNCHER_VARIABLES
         }.toSortedMap().forEach { (name, raw) ->
             val setting = byEnvironmentName[name]
-                ?: if (ignoreUnknown) return@forEach else throw ConfigException(
-                    "unknown environment variable $name: kTCS knows ${byEnvironmentName.keys.joinToString()}",
-                )
+                ?: if (ignoreUnknown) {
+                    return@forEach
+                } else {
+                    throw ConfigException(
+                        "unknown environment variable $name: kTCS knows ${byEnvironmentName.keys.joinToString()}",
+                    )
+                }
             put(setting, raw, "environment variable $name")
         }
         overrides.forEach { option ->
@@ -58,13 +62,17 @@ class ConfigLoader(private val settings: List<Setting<*>> = SettingsCatalogue.on
     }
 
     private fun known(key: String, source: String, ignoreUnknown: Boolean): Setting<*>? = byKey[key]
-        ?: if (ignoreUnknown) null else throw ConfigException(
-            "$source: unknown setting '$key'" + (
-                suggestionFor(key)?.let {
-                    " (did you mean '$it'?)"
-                } ?: ""
-                ),
-        )
+        ?: if (ignoreUnknown) {
+            null
+        } else {
+            throw ConfigException(
+                "$source: unknown setting '$key'" + (
+                    suggestionFor(key)?.let {
+                        " (did you mean '$it'?)"
+                    } ?: ""
+                    ),
+            )
+        }
 
     private fun suggestionFor(key: String): String? =
         byKey.keys.minByOrNull { editDistance(it.lowercase(), key.lowercase()) }

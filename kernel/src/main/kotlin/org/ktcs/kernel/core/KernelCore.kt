@@ -14,6 +14,7 @@ import org.ktcs.api.kernel.Cancellable
 import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.VehicleState
+import org.ktcs.api.model.XmlSafeText
 import org.ktcs.api.order.DriveOrder
 import org.ktcs.api.order.HistoryEntry
 import org.ktcs.api.order.OrderSequence
@@ -30,7 +31,6 @@ import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.model.PlantModelValidator
 import org.ktcs.kernel.orders.OrderLifecycle
 import org.ktcs.kernel.orders.TransportOrderFactory
-import org.ktcs.api.model.XmlSafeText
 import org.ktcs.kernel.vehicles.VehicleControllers
 import org.ktcs.kernel.vehicles.VehicleEnvironment
 import org.ktcs.kernel.workingset.HistoryCodes

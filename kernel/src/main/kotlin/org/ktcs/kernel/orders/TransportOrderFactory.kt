@@ -1,12 +1,12 @@
 package org.ktcs.kernel.orders
 
-import org.ktcs.api.model.XmlSafeText
 import org.ktcs.api.error.IllegalStateChangeException
 import org.ktcs.api.error.InvalidRequestException
 import org.ktcs.api.error.ObjectExistsException
 import org.ktcs.api.error.ObjectUnknownException
 import org.ktcs.api.kernel.KernelClock
 import org.ktcs.api.model.PlantModel
+import org.ktcs.api.model.XmlSafeText
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.DriveOrder
 import org.ktcs.api.order.Operations

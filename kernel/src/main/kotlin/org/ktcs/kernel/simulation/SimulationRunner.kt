@@ -9,11 +9,11 @@ import org.ktcs.api.order.Destination
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.api.routing.Router
+import org.ktcs.extension.KtcsExtension
 import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.kernel.context.RealTimeKernelContext
 import org.ktcs.kernel.context.VirtualTimeKernelContext
 import org.ktcs.kernel.dispatching.VehicleAvailability
-import org.ktcs.extension.KtcsExtension
 import org.ktcs.kernel.routerConfiguration
 import org.ktcs.kernel.routing.DefaultRouter
 import org.ktcs.kernel.scheduling.DefaultScheduler
@@ -41,6 +41,7 @@ class SimulationRunner(
     private val realTime: Boolean = false,
 ) {
     private val random = Random(seed)
+
     // Vehicles of another driver than the loopback one are taken to run on the kernel clock.
     private val timeFactor = loopbackSetting("loopback.timeFactor") as Double? ?: 1.0
     private val sources = model.locations.filter {

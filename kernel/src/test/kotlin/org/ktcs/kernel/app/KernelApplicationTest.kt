@@ -10,9 +10,9 @@ import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.string.shouldStartWith
 import org.koin.core.module.Module
 import org.koin.dsl.module
-import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.extension.ExtensionException
 import org.ktcs.extension.KtcsExtension
+import org.ktcs.kernel.config.ConfigLoader
 import java.net.ConnectException
 import java.net.URI
 import java.net.http.HttpClient

@@ -43,8 +43,10 @@ class ConfigLoaderTest : FunSpec({
     }
 
     test("the file overrides defaults, the environment overrides the file, --set overrides both") {
-        val file = configFile("# a comment", "", "web.port = 1000", "sample.orders.port=2000", "sample.status.port = 3000")
-        val environment = mapOf("KTCS_SAMPLE_ORDERS_PORT" to "2001", "KTCS_SAMPLE_STATUS_PORT" to "3001", "PATH" to "/bin")
+        val file =
+            configFile("# a comment", "", "web.port = 1000", "sample.orders.port=2000", "sample.status.port = 3000")
+        val environment =
+            mapOf("KTCS_SAMPLE_ORDERS_PORT" to "2001", "KTCS_SAMPLE_STATUS_PORT" to "3001", "PATH" to "/bin")
 
         val config = loader.load(file, environment, listOf("sample.status.port=3002"))
 
@@ -82,7 +84,8 @@ class ConfigLoaderTest : FunSpec({
 
     test("a key declared twice names both declarers") {
         shouldThrow<ExtensionException> { SettingsCatalogue.of(listOf(sample, SampleExtension("copy"))) }
-            .message shouldBe "extension 'copy' declares the setting 'sample.orders.port', which extension 'sample' declares too"
+            .message shouldBe
+            "extension 'copy' declares the setting 'sample.orders.port', which extension 'sample' declares too"
         val clash = object : KtcsExtension {
             override val name = "clash"
             override val settings = listOf(KtcsSettings.webPort)

@@ -42,7 +42,9 @@ class ReplacedSchedulerTest : FunSpec({
             kernel.execute { watchdog.check() }
 
             kernel.core.watchdog.detected shouldBe 1
-            kernel.core.notifications.recent().map { it.text }.filter { it.startsWith("deadlock") }.single() shouldStartWith
+            kernel.core.notifications.recent().map {
+                it.text
+            }.filter { it.startsWith("deadlock") }.single() shouldStartWith
                 "deadlock: vehicles Vehicle-01 -> Vehicle-02 wait for each other; contested resources Point-0001, Point-0002"
         }
     }

@@ -1,11 +1,11 @@
 package org.ktcs.kernel.extension
 
+import com.example.extensions.WorkingExtension
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldBeEmpty
-import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.shouldBe
-import com.example.extensions.WorkingExtension
+import io.kotest.matchers.string.shouldContain
 import org.ktcs.extension.ExtensionException
 import org.ktcs.extension.KtcsExtension
 import java.net.URLClassLoader

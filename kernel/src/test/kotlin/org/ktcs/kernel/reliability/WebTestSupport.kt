@@ -8,11 +8,11 @@ import org.koin.core.module.Module
 import org.koin.dsl.bind
 import org.koin.dsl.module
 import org.ktcs.api.driver.VehicleDriverFactory
+import org.ktcs.extension.KtcsExtension
 import org.ktcs.kernel.app.KernelApplication
 import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.kernel.core.StepDriverFactory
-import org.ktcs.extension.KtcsExtension
 import org.slf4j.LoggerFactory
 import java.net.URI
 import java.net.http.HttpClient

@@ -18,9 +18,9 @@ import io.kotest.property.checkAll
 import org.koin.dsl.bind
 import org.koin.dsl.module
 import org.ktcs.api.driver.VehicleDriverFactory
+import org.ktcs.extension.KtcsExtension
 import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.kernel.core.StepDriverFactory
-import org.ktcs.extension.KtcsExtension
 
 private val stepVehicles = object : KtcsExtension {
     override val name = "step vehicles"

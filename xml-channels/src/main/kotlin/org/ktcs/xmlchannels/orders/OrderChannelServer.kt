@@ -4,8 +4,8 @@ import com.fasterxml.jackson.core.exc.StreamReadException
 import com.fasterxml.jackson.databind.JsonMappingException
 import io.ktor.utils.io.writeFully
 import kotlinx.coroutines.withTimeoutOrNull
-import org.ktcs.api.service.TransportOrderService
 import org.ktcs.api.model.XmlSafeText
+import org.ktcs.api.service.TransportOrderService
 import org.ktcs.xmlchannels.Connection
 import org.ktcs.xmlchannels.HostXml
 import org.ktcs.xmlchannels.XmlChannelSettings

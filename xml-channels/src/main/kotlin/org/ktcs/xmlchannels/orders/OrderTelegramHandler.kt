@@ -1,9 +1,9 @@
 package org.ktcs.xmlchannels.orders
 
 import org.ktcs.api.error.KernelException
+import org.ktcs.api.model.XmlSafeText
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.service.TransportOrderService
-import org.ktcs.api.model.XmlSafeText
 
 /**
  * Creates the orders of one telegram through the kernel's services, one after the other, and answers each. An

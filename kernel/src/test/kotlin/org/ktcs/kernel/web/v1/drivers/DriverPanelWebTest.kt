@@ -19,11 +19,11 @@ import org.ktcs.api.driver.DriverParameter
 import org.ktcs.api.driver.ParameterType
 import org.ktcs.api.driver.VehicleDriver
 import org.ktcs.api.driver.VehicleDriverFactory
+import org.ktcs.extension.KtcsExtension
 import org.ktcs.kernel.app.KernelApplication
 import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.kernel.core.StepDriver
-import org.ktcs.extension.KtcsExtension
 import org.ktcs.kernel.web.WebApiClient
 import org.ktcs.kernel.web.WsTestClient
 import java.net.URI
