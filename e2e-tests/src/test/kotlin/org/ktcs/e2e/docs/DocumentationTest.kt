@@ -8,7 +8,7 @@ import io.kotest.matchers.shouldBe
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.e2e.RepositoryRoot
 import org.ktcs.kernel.app.ConfigReference
-import org.ktcs.kernel.workingset.TransportOrderTransitions
+import org.ktcs.kernel.orders.TransportOrderTransitions
 import java.nio.file.Files
 import kotlin.io.path.extension
 import kotlin.io.path.listDirectoryEntries

@@ -10,10 +10,10 @@ import org.ktcs.kernel.config.KtcsSettings
 import org.ktcs.kernel.config.SettingsCatalogue
 import org.ktcs.kernel.extension.Extensions
 import org.ktcs.kernel.extension.InstalledExtensions
-import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.persistence.ModelFileException
 import org.ktcs.kernel.simulation.Fleet
 import org.ktcs.kernel.simulation.SimulationRunner
+import org.ktcs.kernel.validation.InvalidModelException
 import org.ktcs.kernel.web.KernelVersion
 import java.io.PrintStream
 import java.nio.file.Files

@@ -1,13 +1,13 @@
 package org.ktcs.kernel.app
 
 import org.ktcs.api.model.PlantModel
-import org.ktcs.kernel.model.InvalidModelException
-import org.ktcs.kernel.model.ModelProblem
-import org.ktcs.kernel.model.PlantModelValidator
 import org.ktcs.kernel.persistence.ModelFileException
 import org.ktcs.kernel.persistence.PlantModelFiles
 import org.ktcs.kernel.simulation.TrafficGrid
 import org.ktcs.kernel.simulation.WarehousePlant
+import org.ktcs.kernel.validation.InvalidModelException
+import org.ktcs.kernel.validation.ModelProblem
+import org.ktcs.kernel.validation.PlantModelValidator
 import java.io.PrintStream
 import java.nio.file.Path
 

@@ -1,11 +1,11 @@
 package org.ktcs.kernel.app
 
 import org.ktcs.api.model.PlantModel
-import org.ktcs.kernel.model.InvalidModelException
-import org.ktcs.kernel.model.ModelProblem
-import org.ktcs.kernel.model.PlantModelValidator
 import org.ktcs.kernel.persistence.ModelRead
 import org.ktcs.kernel.persistence.PlantModelFiles
+import org.ktcs.kernel.validation.InvalidModelException
+import org.ktcs.kernel.validation.ModelProblem
+import org.ktcs.kernel.validation.PlantModelValidator
 import java.nio.file.Path
 
 /** A model that passed validation, with the warnings it still has. */

@@ -27,17 +27,17 @@ import org.ktcs.api.scheduling.Scheduler
 import org.ktcs.kernel.context.KernelContext
 import org.ktcs.kernel.events.EventBus
 import org.ktcs.kernel.events.Notifications
-import org.ktcs.kernel.model.InvalidModelException
-import org.ktcs.kernel.model.PlantModelValidator
+import org.ktcs.kernel.orders.HistoryCodes
 import org.ktcs.kernel.orders.OrderLifecycle
+import org.ktcs.kernel.orders.OrderSequencePool
 import org.ktcs.kernel.orders.TransportOrderFactory
+import org.ktcs.kernel.orders.TransportOrderPool
+import org.ktcs.kernel.validation.InvalidModelException
+import org.ktcs.kernel.validation.PlantModelValidator
 import org.ktcs.kernel.vehicles.VehicleControllers
 import org.ktcs.kernel.vehicles.VehicleEnvironment
-import org.ktcs.kernel.workingset.HistoryCodes
 import org.ktcs.kernel.workingset.ObjectNames
-import org.ktcs.kernel.workingset.OrderSequencePool
 import org.ktcs.kernel.workingset.PlantState
-import org.ktcs.kernel.workingset.TransportOrderPool
 
 /**
  * The kernel's state and the operations on it, wired together: plant, orders, sequences, vehicle controllers and

@@ -13,7 +13,7 @@ import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.api.routing.Router
-import org.ktcs.kernel.workingset.HistoryCodes
+import org.ktcs.kernel.orders.HistoryCodes
 
 /**
  * What the dispatcher may see and do, backed by the kernel. An order given to a vehicle that is still busy with a

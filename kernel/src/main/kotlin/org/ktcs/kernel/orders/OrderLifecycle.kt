@@ -13,9 +13,6 @@ import org.ktcs.api.order.TransportOrderState.RAW
 import org.ktcs.api.order.TransportOrderState.UNROUTABLE
 import org.ktcs.api.order.TransportOrderState.WITHDRAWN
 import org.ktcs.api.routing.Router
-import org.ktcs.kernel.workingset.HistoryCodes
-import org.ktcs.kernel.workingset.OrderSequencePool
-import org.ktcs.kernel.workingset.TransportOrderPool
 import java.time.Instant
 
 /**

@@ -2,7 +2,6 @@ package org.ktcs.kernel.orders
 
 import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.order.TransportOrderState
-import org.ktcs.kernel.workingset.HistoryCodes
 
 /**
  * kTCS's `waitingReason` of an order: the dispatcher's latest reason for not assigning a DISPATCHABLE order, or the

@@ -6,8 +6,8 @@ import com.fasterxml.jackson.databind.JsonDeserializer
 import com.fasterxml.jackson.databind.deser.DeserializationProblemHandler
 import com.fasterxml.jackson.dataformat.xml.deser.FromXmlParser
 import org.ktcs.api.model.PlantModel
-import org.ktcs.kernel.model.ModelProblem
-import org.ktcs.kernel.model.Severity
+import org.ktcs.kernel.validation.ModelProblem
+import org.ktcs.kernel.validation.Severity
 
 /**
  * A plant model as read from a file, with what the reader skipped or changed on the way.

@@ -14,8 +14,8 @@ import org.ktcs.api.order.Route
 import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.api.scheduling.SchedulerClient
+import org.ktcs.kernel.orders.HistoryCodes
 import org.ktcs.kernel.routing.lockedPathsBetween
-import org.ktcs.kernel.workingset.HistoryCodes
 import org.slf4j.LoggerFactory
 
 /**

@@ -5,8 +5,8 @@ import org.ktcs.api.scheduling.Scheduler
 import org.ktcs.kernel.context.KernelContext
 import org.ktcs.kernel.events.EventBus
 import org.ktcs.kernel.events.Notifications
+import org.ktcs.kernel.orders.TransportOrderPool
 import org.ktcs.kernel.workingset.PlantState
-import org.ktcs.kernel.workingset.TransportOrderPool
 
 /** What vehicle controllers share of the kernel. */
 class VehicleEnvironment(

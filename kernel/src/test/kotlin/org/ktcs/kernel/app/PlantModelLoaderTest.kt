@@ -10,8 +10,8 @@ import io.kotest.matchers.nulls.shouldNotBeNull
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import org.ktcs.api.model.PointType
-import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.persistence.PersistenceFixtures
+import org.ktcs.kernel.validation.InvalidModelException
 import java.nio.file.Files
 
 class PlantModelLoaderTest : FunSpec({

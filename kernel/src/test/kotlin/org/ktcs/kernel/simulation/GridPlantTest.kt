@@ -7,8 +7,8 @@ import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.shouldBe
 import org.ktcs.api.model.PointType
 import org.ktcs.api.model.Vehicle
-import org.ktcs.kernel.model.PlantModelValidator
 import org.ktcs.kernel.routing.DefaultRouter
+import org.ktcs.kernel.validation.PlantModelValidator
 
 class GridPlantTest : FunSpec({
     context("a generated grid is a valid plant in which every station reaches every other") {

@@ -7,8 +7,8 @@ import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.shouldBe
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.PointType
-import org.ktcs.kernel.model.PlantModelValidator
 import org.ktcs.kernel.routing.DefaultRouter
+import org.ktcs.kernel.validation.PlantModelValidator
 
 class TrafficGridTest : FunSpec({
     fun PlantModel.everyStationReachesEveryOther() {
