@@ -39,30 +39,25 @@ class ModuleGraphTest : FunSpec({
                         "</dependency>"
                 } + "</dependencies></project>"
 
+        // A kernel on the SPI, an SPI module, a driver and a panel that uses the driver, with the given dependencies.
+        fun build(driver: Array<Pair<String, String>>, panel: Pair<String, String>) = MavenBuild(
+            root,
+            mapOf(
+                "kernel" to pom("kernel", "spi" to "compile"),
+                "spi" to pom("spi"),
+                "driver" to pom("driver", *driver),
+                "panel" to pom("panel", panel),
+            ),
+        )
+
         test("a module that depends on the kernel directly or through another module") {
-            val build = MavenBuild(
-                root,
-                mapOf(
-                    "kernel" to pom("kernel", "spi" to "compile"),
-                    "spi" to pom("spi"),
-                    "driver" to pom("driver", "kernel" to "compile"),
-                    "panel" to pom("panel", "driver" to "runtime"),
-                ),
-            )
-            kernelOnMainClassPath(build) shouldBe listOf("driver -> :kernel", "panel -> :driver -> :kernel")
+            kernelOnMainClassPath(build(arrayOf("kernel" to "compile"), "driver" to "runtime")) shouldBe
+                listOf("driver -> :kernel", "panel -> :driver -> :kernel")
         }
 
         test("nothing when the kernel is a test dependency only") {
-            val build = MavenBuild(
-                root,
-                mapOf(
-                    "kernel" to pom("kernel", "spi" to "compile"),
-                    "spi" to pom("spi"),
-                    "driver" to pom("driver", "spi" to "compile", "kernel" to "test"),
-                    "panel" to pom("panel", "driver" to "compile"),
-                ),
-            )
-            kernelOnMainClassPath(build).shouldBeEmpty()
+            kernelOnMainClassPath(build(arrayOf("spi" to "compile", "kernel" to "test"), "driver" to "compile"))
+                .shouldBeEmpty()
         }
     }
 })
