@@ -106,3 +106,22 @@ public object SchedulerWaits {
         return blockers
     }
 }
+
+/** A vehicle as the scheduler sees it. */
+public interface SchedulerClient {
+    /** The vehicle's name. */
+    public val name: String
+
+    /**
+     * The scheduler granted [resources]. Return `false` if the client no longer wants them (e.g. its order was
+     * withdrawn meanwhile); the scheduler then frees them again.
+     */
+    public fun onAllocationGranted(resources: Set<String>): Boolean
+
+    /**
+     * What the client will still hold besides [resources] once it has driven up to them: the resources its length
+     * still covers behind it. Deadlock avoidance counts them as held after a grant of [resources]; the default,
+     * nothing, suits vehicles that are short compared with the paths.
+     */
+    public fun heldAfter(resources: Set<String>): Set<String> = emptySet()
+}
