@@ -48,7 +48,12 @@ private fun expectedPosition(stepIndex: Int, route: Route): String? =
     route.steps.getOrNull(stepIndex)?.destinationPoint
         ?: route.steps.firstOrNull()?.let { it.sourcePoint ?: it.destinationPoint }
 
-private fun VehicleController.followNewRoute(order: TransportOrder, driveOrder: DriveOrder, oldRoute: Route, found: Route) {
+private fun VehicleController.followNewRoute(
+    order: TransportOrder,
+    driveOrder: DriveOrder,
+    oldRoute: Route,
+    found: Route,
+) {
     val kept = oldRoute.steps.take(order.currentRouteStepIndex + 1 + sent.size)
     val route =
         Route(kept + found.steps.mapIndexed { i, step -> step.copy(routeIndex = kept.size + i) }, found.costs)
