@@ -30,19 +30,7 @@ internal fun VehicleController.avoidBlockedStart(): Boolean {
  */
 private fun VehicleController.rerouteNextLeg() {
     val order = env.orders.require(currentOrder!!)
-    val index = order.currentDriveOrderIndex
-    val next = order.driveOrders.getOrNull(index + 1) ?: return
-    val route = next.route ?: return
-    val start = route.steps.firstOrNull()?.sourcePoint ?: return
-    val first = route.steps.first().path ?: return
-    val target = route.finalDestinationPoint ?: return
-    val found = env.router().routes(env.plant.vehicle(name), start, target, setOf(first)).firstOrNull() ?: return
-    env.orders.update(order.name) { current ->
-        current.copy(
-            driveOrders = current.driveOrders.map {
-                if (it.name == next.name) it.copy(route = found) else it
-            },
-        )
-    }
-    claimRestOfOrder(env.orders.require(order.name), index)
+    val next = order.driveOrders.getOrNull(order.currentDriveOrderIndex + 1) ?: return
+    val first = next.route?.steps?.firstOrNull()?.path ?: return
+    rerouteLegs(order, listOf(next), setOf(first))
 }

@@ -89,3 +89,39 @@ private fun VehicleController.lockedPathsText(start: String, target: String): St
     val locked = env.plant.layoutWithLocks().lockedPathsBetween(start, target)
     return if (locked.isEmpty()) "" else ": locked path ${locked.joinToString()} blocks the way"
 }
+
+/**
+ * Routes the drive orders after the current one that pass [avoid] anew around it, if the plant allows, and claims the
+ * new way; returns whether one of them changed. A deadlock may lie past the current drive order: a vehicle held back
+ * before a station because of the way it would leave it by.
+ */
+internal fun VehicleController.rerouteLaterLegs(avoid: Set<String>): Boolean {
+    val order = currentOrder?.let(env.orders::require) ?: return false
+    if (withdrawing) return false
+    val later = order.driveOrders.drop(order.currentDriveOrderIndex + 1).filter { leg ->
+        leg.route?.steps.orEmpty().any { it.path in avoid || it.destinationPoint in avoid }
+    }
+    return rerouteLegs(order, later, avoid)
+}
+
+/** Routes each of [legs] (drive orders of [order] not started yet) around [avoid] where possible; claims the result. */
+internal fun VehicleController.rerouteLegs(order: TransportOrder, legs: List<DriveOrder>, avoid: Set<String>): Boolean {
+    val found = legs.mapNotNull { leg ->
+        val route = leg.route ?: return@mapNotNull null
+        val start = route.steps.firstOrNull()?.sourcePoint ?: return@mapNotNull null
+        val target = route.finalDestinationPoint ?: return@mapNotNull null
+        env.router().routes(env.plant.vehicle(name), start, target, avoid).firstOrNull()
+            ?.takeIf { it.steps != route.steps }
+            ?.let { leg.name to it }
+    }.toMap()
+    if (found.isEmpty()) return false
+    env.orders.update(order.name) { current ->
+        current.copy(
+            driveOrders = current.driveOrders.map { leg ->
+                found[leg.name]?.let { leg.copy(route = it) } ?: leg
+            },
+        )
+    }
+    claimRestOfOrder(env.orders.require(order.name), order.currentDriveOrderIndex)
+    return true
+}

@@ -326,9 +326,16 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
 
     /**
      * Routes the rest of the current drive order anew around [avoid], from where the vehicle will be after the commands
-     * it was already sent; returns whether it now follows a new route. Used to break deadlocks.
+     * it was already sent, or, if the current drive order does not pass [avoid], the later ones that do; returns whether
+     * it now follows a new route. Used to break deadlocks.
      */
-    fun reroute(avoid: Set<String>): Boolean = attemptReroute(avoid, forced = false, onRequest = false) == Rerouted
+    fun reroute(avoid: Set<String>): Boolean =
+        if (avoid.isEmpty() || (listOfNotNull(waiting) + remaining).any { it.resources.any(avoid::contains) }) {
+            attemptReroute(avoid, forced = false, onRequest = false) == Rerouted
+        } else {
+            // What to avoid lies past the current drive order: routing that one anew would change nothing.
+            rerouteLaterLegs(avoid)
+        }
 
     /**
      * Routes the rest of the current drive order anew around [avoid], as openTCS's rerouting does: a regular reroute
