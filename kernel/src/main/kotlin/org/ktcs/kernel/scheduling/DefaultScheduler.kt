@@ -162,8 +162,10 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     }
 
     // What a client will still hold once it has driven everything it was granted (everything, if it drives nothing).
+    // A last grant the client no longer holds (it refused it, or gave it back) says nothing about where it goes.
     private fun keptBy(client: String): Set<String> {
-        val last = lastGrants[client] ?: return occupancy.holdingKeys(client)
+        val holds = occupancy.holdingKeys(client)
+        val last = lastGrants[client]?.takeIf { holds.containsAll(it.keys) } ?: return holds
         return last.keys + keysOf(last.client.heldAfter(last.resources))
     }
 

@@ -7,15 +7,12 @@ import org.ktcs.api.driver.VehicleDriver
 import org.ktcs.api.event.NotificationLevel
 import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.model.ProcState
-import org.ktcs.api.order.DriveOrder
 import org.ktcs.api.order.DriveOrderState
 import org.ktcs.api.order.HistoryEntry
-import org.ktcs.api.order.Route
 import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.api.scheduling.SchedulerClient
 import org.ktcs.kernel.orders.HistoryCodes
-import org.ktcs.kernel.routing.lockedPathsBetween
 import org.slf4j.LoggerFactory
 
 /**
@@ -23,14 +20,18 @@ import org.slf4j.LoggerFactory
  * movement command at a time, sends each granted command to the driver, gives back what lies behind the vehicle,
  * and moves on drive order by drive order until the order is finished or withdrawn. Confined to the kernel context.
  */
-class VehicleController(override val name: String, private val env: VehicleEnvironment) : SchedulerClient {
+class VehicleController(override val name: String, internal val env: VehicleEnvironment) : SchedulerClient {
     private val log = LoggerFactory.getLogger(VehicleController::class.java)
-    private val held = HeldResources()
-    private val remaining = ArrayDeque<PlannedCommand>()
-    private val sent = ArrayDeque<PlannedCommand>()
-    private var waiting: PlannedCommand? = null
-    private var currentOrder: String? = null
-    private var withdrawing = false
+
+    // Internal, not private: the rerouting in Rerouting.kt and BlockedStart.kt works on the same state.
+    internal val held = HeldResources()
+    internal val remaining = ArrayDeque<PlannedCommand>()
+    internal val sent = ArrayDeque<PlannedCommand>()
+    internal var waiting: PlannedCommand? = null
+    internal var currentOrder: String? = null
+        private set
+    internal var withdrawing = false
+        private set
     private var withdrawReason = ""
 
     var driver: VehicleDriver? = null
@@ -99,7 +100,7 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
      * Claims what is left of the current drive order and the routes of the drive orders after it: deadlock
      * avoidance judges the whole way the vehicle still has to go, so that it never starts a leg it cannot finish.
      */
-    private fun claimRestOfOrder(order: TransportOrder, index: Int) {
+    internal fun claimRestOfOrder(order: TransportOrder, index: Int) {
         val later = order.driveOrders.drop(index + 1).flatMap { driveOrder ->
             val route = driveOrder.route ?: return@flatMap emptyList()
             plannedCommands(order, driveOrder, route) { env.plant.staticModel().location(it)?.name }
@@ -107,7 +108,7 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         env.scheduler().claim(this, (remaining + later).map { it.resources })
     }
 
-    private fun requestNext() {
+    internal fun requestNext() {
         val driver = driver ?: return
         if (withdrawing || waiting != null || !driver.isEnabled) return
         if (sent.size >= driver.commandQueueCapacity) return
@@ -312,7 +313,7 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
         publishResources()
     }
 
-    private fun publishResources() {
+    internal fun publishResources() {
         env.plant.updateVehicle(name) {
             it.copy(
                 allocatedResources = held.asList(),
@@ -325,9 +326,16 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
 
     /**
      * Routes the rest of the current drive order anew around [avoid], from where the vehicle will be after the commands
-     * it was already sent; returns whether it now follows a new route. Used to break deadlocks.
+     * it was already sent, or, if the current drive order does not pass [avoid], the later ones that do; returns whether
+     * it now follows a new route. Used to break deadlocks.
      */
-    fun reroute(avoid: Set<String>): Boolean = attemptReroute(avoid, forced = false, onRequest = false) == Rerouted
+    fun reroute(avoid: Set<String>): Boolean =
+        if (avoid.isEmpty() || (listOfNotNull(waiting) + remaining).any { it.resources.any(avoid::contains) }) {
+            attemptReroute(avoid, forced = false, onRequest = false) == Rerouted
+        } else {
+            // What to avoid lies past the current drive order: routing that one anew would change nothing.
+            rerouteLaterLegs(avoid)
+        }
 
     /**
      * Routes the rest of the current drive order anew around [avoid], as openTCS's rerouting does: a regular reroute
@@ -339,129 +347,6 @@ class VehicleController(override val name: String, private val env: VehicleEnvir
      */
     fun reroute(avoid: Set<String>, forced: Boolean): String? =
         (attemptReroute(avoid, forced, onRequest = true) as? Refused)?.reason
-
-    private sealed interface RerouteOutcome
-
-    private data object Rerouted : RerouteOutcome
-
-    private data object NothingLeft : RerouteOutcome
-
-    private data class Refused(val reason: String) : RerouteOutcome
-
-    private fun attemptReroute(avoid: Set<String>, forced: Boolean, onRequest: Boolean): RerouteOutcome {
-        val order = currentOrder?.let(env.orders::require) ?: return Refused("vehicle $name has no transport order")
-        if (withdrawing) return Refused("the order ${order.name} of vehicle $name is being withdrawn")
-        val driveOrder = order.driveOrders[order.currentDriveOrderIndex]
-        val oldRoute = driveOrder.route ?: return Refused("drive order ${driveOrder.name} has no route")
-        val position = env.plant.vehicle(name).currentPosition
-            ?: return Refused("the position of vehicle $name is unknown")
-        val sentEnd = sent.lastOrNull()?.command?.step?.destinationPoint
-        if (onRequest && !forced && sentEnd == null) {
-            val expected = expectedPosition(order.currentRouteStepIndex, oldRoute) ?: position
-            if (position != expected) {
-                return Refused(
-                    "vehicle $name stands at $position, not at $expected where its route goes on; a forced " +
-                        "reroute starts from where it stands",
-                )
-            }
-        }
-        val start = if (forced) position else sentEnd ?: position
-        val target = oldRoute.finalDestinationPoint
-            ?: return Refused("drive order ${driveOrder.name} has no destination")
-        if (start == target && !forced) return NothingLeft
-        val found = env.router().routes(env.plant.vehicle(name), start, target, avoid).firstOrNull()
-            ?: return Refused("no route for vehicle $name from $start to $target" + lockedPathsText(start, target))
-        if (forced) restartFrom(start)
-        followNewRoute(order, driveOrder, oldRoute, found)
-        return Rerouted
-    }
-
-    /** Where the route expects the vehicle once it carried out every command sent: after step [stepIndex]. */
-    private fun expectedPosition(stepIndex: Int, route: Route): String? =
-        route.steps.getOrNull(stepIndex)?.destinationPoint
-            ?: route.steps.firstOrNull()?.let { it.sourcePoint ?: it.destinationPoint }
-
-    private fun followNewRoute(order: TransportOrder, driveOrder: DriveOrder, oldRoute: Route, found: Route) {
-        val kept = oldRoute.steps.take(order.currentRouteStepIndex + 1 + sent.size)
-        val route =
-            Route(kept + found.steps.mapIndexed { i, step -> step.copy(routeIndex = kept.size + i) }, found.costs)
-        val rerouted = driveOrder.copy(route = route)
-        env.orders.update(order.name) { current ->
-            current.copy(driveOrders = current.driveOrders.map { if (it.name == rerouted.name) rerouted else it })
-        }
-        if (waiting != null) {
-            env.scheduler().clearPendingAllocations(this)
-            waiting = null
-        }
-        remaining.clear()
-        remaining.addAll(
-            plannedCommands(order, rerouted, route) {
-                env.plant.staticModel().location(it)?.name
-            }.drop(kept.size),
-        )
-        claimRestOfOrder(order, order.currentDriveOrderIndex)
-        publishResources()
-        requestNext()
-    }
-
-    /** Forgets the commands sent to the driver and holds only [position], where a forced reroute starts. */
-    private fun restartFrom(position: String) {
-        driver?.clearCommandQueue()
-        sent.clear()
-        val heldPosition = position in held.all()
-        env.scheduler().free(this, held.releaseAllBut(setOf(position)))
-        if (!heldPosition) env.scheduler().allocateNow(this, setOf(position))
-    }
-
-    private fun lockedPathsText(start: String, target: String): String {
-        val locked = env.plant.layoutWithLocks().lockedPathsBetween(start, target)
-        return if (locked.isEmpty()) "" else ": locked path ${locked.joinToString()} blocks the way"
-    }
-
-    /**
-     * A vehicle starting a route from where it stood may find its first step leading into a queue of vehicles that
-     * wait for its own point (it stood idle beside a full loop, or at a station whose other way out it was counted
-     * on to take): going that way would close a deadlock. Route around that step's path instead (a detour that leaves
-     * the point free, even if it joins the same queue later), else around the whole step, if the plant allows;
-     * returns whether it rerouted.
-     */
-    private fun avoidBlockedStart(): Boolean {
-        val scheduler = env.scheduler()
-        if (sent.isNotEmpty() || !scheduler.claimIsBlocked(this)) return false
-        val position = env.plant.vehicle(name).currentPosition
-        val first = remaining.firstOrNull() ?: return false
-        val path = first.command.step.path
-        if (remaining.all { it.command.step.path == null }) {
-            rerouteNextLeg()
-            return false
-        }
-        return (path != null && reroute(setOf(path)) && !scheduler.claimIsBlocked(this)) ||
-            reroute(first.resources - setOfNotNull(position))
-    }
-
-    /**
-     * The current drive order is an operation where the vehicle stands, so its first move, the one that would close
-     * the cycle, is the next drive order's: route that drive order around its first path, if the plant allows, and
-     * claim the new way. Its commands are planned when it starts.
-     */
-    private fun rerouteNextLeg() {
-        val order = env.orders.require(currentOrder!!)
-        val index = order.currentDriveOrderIndex
-        val next = order.driveOrders.getOrNull(index + 1) ?: return
-        val route = next.route ?: return
-        val start = route.steps.firstOrNull()?.sourcePoint ?: return
-        val first = route.steps.first().path ?: return
-        val target = route.finalDestinationPoint ?: return
-        val found = env.router().routes(env.plant.vehicle(name), start, target, setOf(first)).firstOrNull() ?: return
-        env.orders.update(order.name) { current ->
-            current.copy(
-                driveOrders = current.driveOrders.map {
-                    if (it.name == next.name) it.copy(route = found) else it
-                },
-            )
-        }
-        claimRestOfOrder(env.orders.require(order.name), index)
-    }
 
     /** The driver can take more commands now (e.g. it was enabled). */
     fun onDriverReady() {

@@ -20,7 +20,7 @@ class RerouteTest : FunSpec({
         emptyMap(),
         listOf("dispatcher.parkIdleVehicles=false", "dispatcher.rechargeIdleVehicles=false"),
     )
-    // A -> W -> X -> B -> D is the way; Y, off it, has a path of its own to D.
+    // A -> W -> X -> B -> D is the way; Y, off it, has a path of its own to D and one from X.
     val model = PlantModel(
         "reroute",
         points = listOf("A", "W", "X", "B", "D", "Y").map { Point(it) },
@@ -30,6 +30,7 @@ class RerouteTest : FunSpec({
             Path("X --- B", "X", "B", 1_000),
             Path("B --- D", "B", "D", 1_000),
             Path("Y --- D", "Y", "D", 2_000),
+            Path("X --- Y", "X", "Y", 2_000),
         ),
         vehicles = listOf(Vehicle("V", properties = mapOf("loopback:initialPosition" to "A"))),
     )
@@ -99,6 +100,27 @@ class RerouteTest : FunSpec({
             // The deadlock watchdog relies on this: a vehicle that did not change its way did not resolve anything.
             rerouted shouldBe false
             kernel.reroute(forced = false) shouldBe null
+        }
+    }
+
+    test("a deadlock past the current drive order is broken by routing the later drive orders around it") {
+        // The order goes to W, then on to D; the watchdog finds what to avoid (B) on the second drive order only.
+        val drivers = RecordingStepDrivers()
+        SimulationKernel(model, config, listOf(drivers.module)).use { kernel ->
+            kernel.now {
+                createTransportOrder(
+                    TransportOrderCreation("T", listOf(Destination("X", "MOVE"), Destination("D", "MOVE"))),
+                )
+            }
+            kernel.context.runUntilTime(kernel.context.elapsedMillis() + 1_000)
+            var rerouted: Boolean? = null
+            kernel.now { rerouted = controllers.controller("V").reroute(setOf("B")) }
+
+            rerouted shouldBe true
+            kernel.context.runUntil { kernel.core.orders.require("T").state.isFinal }
+            kernel.core.orders.require("T").state shouldBe TransportOrderState.FINISHED
+            kernel.core.orders.require("T").driveOrders.last().route!!.steps.map { it.path } shouldBe
+                listOf("X --- Y", "Y --- D")
         }
     }
 })

@@ -157,4 +157,22 @@ class DeadlockAvoidanceTest : FunSpec({
         f.allocate(v1, "A", "L")
         v1.granted shouldContainExactly listOf(setOf("A", "L"))
     }
+
+    test("a grant the vehicle refused does not hide what it still holds from the watchdog") {
+        // v1 at A was granted the way into its park bay P and refused it (it got an order instead); v1 and v2 now
+        // face each other on A - B. What v1 holds is A, and it keeps A until it moves: the watchdog must see the cycle.
+        val f = SchedulerFixture(plant("A-B", "B-A", "A-P"))
+        val (v1, v2) = listOf("v1" to "A", "v2" to "B").map { (name, point) ->
+            f.client(name).also { f.scheduler.allocateNow(it, setOf(point)) }
+        }
+        v1.accepts = false
+        f.allocate(v1, "A-P", "P")
+        v1.accepts = true
+
+        f.allocate(v1, "A-B", "B")
+        f.allocate(v2, "B-A", "A")
+
+        DeadlockDetector.detect(f.scheduler.waitForGraph()).map { it.vehicles.toSet() } shouldContainExactly
+            listOf(setOf("v1", "v2"))
+    }
 })

@@ -1,0 +1,34 @@
+package org.ktcs.kernel.vehicles
+
+/**
+ * A vehicle starting a route from where it stood may find its first step leading into a queue of vehicles that
+ * wait for its own point (it stood idle beside a full loop, or at a station whose other way out it was counted
+ * on to take): going that way would close a deadlock. Route around that step's path instead (a detour that leaves
+ * the point free, even if it joins the same queue later), else around the whole step, if the plant allows;
+ * returns whether it rerouted.
+ */
+internal fun VehicleController.avoidBlockedStart(): Boolean {
+    val scheduler = env.scheduler()
+    if (sent.isNotEmpty() || !scheduler.claimIsBlocked(this)) return false
+    val position = env.plant.vehicle(name).currentPosition
+    val first = remaining.firstOrNull() ?: return false
+    val path = first.command.step.path
+    if (remaining.all { it.command.step.path == null }) {
+        rerouteNextLeg()
+        return false
+    }
+    return (path != null && reroute(setOf(path)) && !scheduler.claimIsBlocked(this)) ||
+        reroute(first.resources - setOfNotNull(position))
+}
+
+/**
+ * The current drive order is an operation where the vehicle stands, so its first move, the one that would close
+ * the cycle, is the next drive order's: route that drive order around its first path, if the plant allows, and
+ * claim the new way. Its commands are planned when it starts.
+ */
+private fun VehicleController.rerouteNextLeg() {
+    val order = env.orders.require(currentOrder!!)
+    val next = order.driveOrders.getOrNull(order.currentDriveOrderIndex + 1) ?: return
+    val first = next.route?.steps?.firstOrNull()?.path ?: return
+    rerouteLegs(order, listOf(next), setOf(first))
+}

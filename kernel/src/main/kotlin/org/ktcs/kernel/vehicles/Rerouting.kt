@@ -1,0 +1,127 @@
+package org.ktcs.kernel.vehicles
+
+import org.ktcs.api.order.DriveOrder
+import org.ktcs.api.order.Route
+import org.ktcs.api.order.TransportOrder
+import org.ktcs.kernel.routing.lockedPathsBetween
+
+// Rerouting a vehicle's current drive order: on request (the API, the deadlock watchdog) or to avoid a blocked start.
+
+internal sealed interface RerouteOutcome
+
+internal data object Rerouted : RerouteOutcome
+
+internal data object NothingLeft : RerouteOutcome
+
+internal data class Refused(val reason: String) : RerouteOutcome
+
+internal fun VehicleController.attemptReroute(avoid: Set<String>, forced: Boolean, onRequest: Boolean): RerouteOutcome {
+    val order = currentOrder?.let(env.orders::require) ?: return Refused("vehicle $name has no transport order")
+    if (withdrawing) return Refused("the order ${order.name} of vehicle $name is being withdrawn")
+    val driveOrder = order.driveOrders[order.currentDriveOrderIndex]
+    val oldRoute = driveOrder.route ?: return Refused("drive order ${driveOrder.name} has no route")
+    val position = env.plant.vehicle(name).currentPosition
+        ?: return Refused("the position of vehicle $name is unknown")
+    val sentEnd = sent.lastOrNull()?.command?.step?.destinationPoint
+    if (onRequest && !forced && sentEnd == null) {
+        val expected = expectedPosition(order.currentRouteStepIndex, oldRoute) ?: position
+        if (position != expected) {
+            return Refused(
+                "vehicle $name stands at $position, not at $expected where its route goes on; a forced " +
+                    "reroute starts from where it stands",
+            )
+        }
+    }
+    val start = if (forced) position else sentEnd ?: position
+    val target = oldRoute.finalDestinationPoint
+        ?: return Refused("drive order ${driveOrder.name} has no destination")
+    if (start == target && !forced) return NothingLeft
+    val found = env.router().routes(env.plant.vehicle(name), start, target, avoid).firstOrNull()
+        ?: return Refused("no route for vehicle $name from $start to $target" + lockedPathsText(start, target))
+    if (forced) restartFrom(start)
+    followNewRoute(order, driveOrder, oldRoute, found)
+    return Rerouted
+}
+
+/** Where the route expects the vehicle once it carried out every command sent: after step [stepIndex]. */
+private fun expectedPosition(stepIndex: Int, route: Route): String? =
+    route.steps.getOrNull(stepIndex)?.destinationPoint
+        ?: route.steps.firstOrNull()?.let { it.sourcePoint ?: it.destinationPoint }
+
+private fun VehicleController.followNewRoute(
+    order: TransportOrder,
+    driveOrder: DriveOrder,
+    oldRoute: Route,
+    found: Route,
+) {
+    val kept = oldRoute.steps.take(order.currentRouteStepIndex + 1 + sent.size)
+    val route =
+        Route(kept + found.steps.mapIndexed { i, step -> step.copy(routeIndex = kept.size + i) }, found.costs)
+    val rerouted = driveOrder.copy(route = route)
+    env.orders.update(order.name) { current ->
+        current.copy(driveOrders = current.driveOrders.map { if (it.name == rerouted.name) rerouted else it })
+    }
+    if (waiting != null) {
+        env.scheduler().clearPendingAllocations(this)
+        waiting = null
+    }
+    remaining.clear()
+    remaining.addAll(
+        plannedCommands(order, rerouted, route) {
+            env.plant.staticModel().location(it)?.name
+        }.drop(kept.size),
+    )
+    claimRestOfOrder(order, order.currentDriveOrderIndex)
+    publishResources()
+    requestNext()
+}
+
+/** Forgets the commands sent to the driver and holds only [position], where a forced reroute starts. */
+private fun VehicleController.restartFrom(position: String) {
+    driver?.clearCommandQueue()
+    sent.clear()
+    val heldPosition = position in held.all()
+    env.scheduler().free(this, held.releaseAllBut(setOf(position)))
+    if (!heldPosition) env.scheduler().allocateNow(this, setOf(position))
+}
+
+private fun VehicleController.lockedPathsText(start: String, target: String): String {
+    val locked = env.plant.layoutWithLocks().lockedPathsBetween(start, target)
+    return if (locked.isEmpty()) "" else ": locked path ${locked.joinToString()} blocks the way"
+}
+
+/**
+ * Routes the drive orders after the current one that pass [avoid] anew around it, if the plant allows, and claims the
+ * new way; returns whether one of them changed. A deadlock may lie past the current drive order: a vehicle held back
+ * before a station because of the way it would leave it by.
+ */
+internal fun VehicleController.rerouteLaterLegs(avoid: Set<String>): Boolean {
+    val order = currentOrder?.let(env.orders::require) ?: return false
+    if (withdrawing) return false
+    val later = order.driveOrders.drop(order.currentDriveOrderIndex + 1).filter { leg ->
+        leg.route?.steps.orEmpty().any { it.path in avoid || it.destinationPoint in avoid }
+    }
+    return rerouteLegs(order, later, avoid)
+}
+
+/** Routes each of [legs] (drive orders of [order] not started yet) around [avoid] where possible; claims the result. */
+internal fun VehicleController.rerouteLegs(order: TransportOrder, legs: List<DriveOrder>, avoid: Set<String>): Boolean {
+    val found = legs.mapNotNull { leg ->
+        val route = leg.route ?: return@mapNotNull null
+        val start = route.steps.firstOrNull()?.sourcePoint ?: return@mapNotNull null
+        val target = route.finalDestinationPoint ?: return@mapNotNull null
+        env.router().routes(env.plant.vehicle(name), start, target, avoid).firstOrNull()
+            ?.takeIf { it.steps != route.steps }
+            ?.let { leg.name to it }
+    }.toMap()
+    if (found.isEmpty()) return false
+    env.orders.update(order.name) { current ->
+        current.copy(
+            driveOrders = current.driveOrders.map { leg ->
+                found[leg.name]?.let { leg.copy(route = it) } ?: leg
+            },
+        )
+    }
+    claimRestOfOrder(env.orders.require(order.name), order.currentDriveOrderIndex)
+    return true
+}
