@@ -18,6 +18,8 @@ class KtcsProcess(vararg args: String, workingDirectory: Path = RepositoryRoot.p
             .directory(workingDirectory.toFile())
             .redirectErrorStream(true)
             .also { it.environment().keys.removeIf { key -> key.startsWith("KTCS_") } }
+            // Nothing kept between tests (nor in the repository's data/) unless a test asks with --set.
+            .also { it.environment()["KTCS_PERSISTENCE_DURABILITY"] = "OFF" }
             .start()
     private val lines = LinkedBlockingQueue<String>()
     private val seen = mutableListOf<String>()

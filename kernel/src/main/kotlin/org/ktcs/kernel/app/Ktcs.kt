@@ -1,5 +1,6 @@
 package org.ktcs.kernel.app
 
+import org.ktcs.kernel.store.DurableState
 import org.ktcs.kernel.bench.Bench
 import org.ktcs.kernel.config.ConfigException
 import org.ktcs.kernel.config.ConfigFile
@@ -61,8 +62,13 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
             throw failed.cause ?: failed
         }
         withContextClassLoader(installed.classLoader) {
-            val application =
-                KernelApplication(config, model, installed.extensions, installed::jarOf) { signal?.request() }
+            val application = KernelApplication(
+                config,
+                model,
+                installed.extensions,
+                installed::jarOf,
+                DurableState.open(config),
+            ) { signal?.request() }
             application.start()
             try {
                 waitForShutdown()

@@ -101,6 +101,8 @@ class KtcsUnderTest private constructor(
                 "orderpool.sweepAge=$DAY_MILLIS",
                 // The batch workload follows every event; a burst of orders must not make kTCS drop some for it.
                 "web.webSocketBufferSize=$WEB_SOCKET_BUFFER",
+                // Figures stay those of the kernel alone unless a benchmark asks for the store (extraSettings win).
+                "persistence.durability=OFF",
             ) + extraSettings
             val command = buildList {
                 add(launcher.toString())

@@ -6,6 +6,7 @@ import org.ktcs.api.order.TransportOrderState
 import org.ktcs.api.service.DispatcherService
 import org.ktcs.kernel.core.KernelCore
 import org.ktcs.kernel.dispatching.VehicleAvailability
+import org.ktcs.kernel.store.durably
 
 class StandardDispatcherService(private val kernel: KernelCore) : DispatcherService {
     private val availability = VehicleAvailability(kernel.orders::get, kernel.sequences::get)
@@ -13,13 +14,13 @@ class StandardDispatcherService(private val kernel: KernelCore) : DispatcherServ
     override suspend fun dispatch() = kernel.context.call { kernel.dispatch() }
 
     override suspend fun withdrawByTransportOrder(order: String, immediate: Boolean, disableVehicle: Boolean) =
-        kernel.context.call { kernel.withdraw(order, immediate, disableVehicle) }
+        kernel.durably { kernel.withdraw(order, immediate, disableVehicle) }
 
     override suspend fun withdrawByVehicle(
         vehicle: String,
         immediate: Boolean,
         disableVehicle: Boolean,
-    ) = kernel.context.call {
+    ) = kernel.durably {
         val order = kernel.plant.vehicle(vehicle).transportOrder
         if (order != null) {
             kernel.withdraw(order, immediate, disableVehicle)
@@ -28,7 +29,7 @@ class StandardDispatcherService(private val kernel: KernelCore) : DispatcherServ
         }
     }
 
-    override suspend fun assignNow(order: String) = kernel.context.call {
+    override suspend fun assignNow(order: String) = kernel.durably {
         val current = kernel.orders.require(order)
         val vehicleName = current.intendedVehicle
             ?: throw IllegalStateChangeException("transport order '$order' has no intended vehicle to assign it to")
@@ -51,7 +52,7 @@ class StandardDispatcherService(private val kernel: KernelCore) : DispatcherServ
         kernel.assign(order, vehicleName, driveOrders)
     }
 
-    override suspend fun reroute(vehicle: String, forced: Boolean) = kernel.context.call {
+    override suspend fun reroute(vehicle: String, forced: Boolean) = kernel.durably {
         kernel.plant.vehicle(vehicle)
         kernel.controllers.controller(vehicle).reroute(emptySet(), forced)?.let {
             throw IllegalStateChangeException("cannot reroute vehicle '$vehicle': $it")

@@ -13,6 +13,7 @@ import org.ktcs.api.service.DriverAttachment
 import org.ktcs.api.service.VehicleService
 import org.ktcs.kernel.core.KernelCore
 import org.ktcs.kernel.vehicles.DriverPanels
+import org.ktcs.kernel.store.durably
 
 class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
     private val panels = DriverPanels(kernel.controllers) { kernel.plant.staticModel() }
@@ -23,9 +24,9 @@ class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
     override suspend fun vehicle(name: String): Vehicle? = kernel.context.call { kernel.plant.vehicleOrNull(name) }
 
     override suspend fun setIntegrationLevel(vehicle: String, level: IntegrationLevel) =
-        kernel.context.call { kernel.controllers.setIntegrationLevel(vehicle, level) }
+        kernel.durably { kernel.controllers.setIntegrationLevel(vehicle, level) }
 
-    override suspend fun setPaused(vehicle: String, paused: Boolean) = kernel.context.call {
+    override suspend fun setPaused(vehicle: String, paused: Boolean) = kernel.durably {
         kernel.controllers.setPaused(vehicle, paused)
     }
 
@@ -66,12 +67,12 @@ class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
         kernel.controllers.attachment(vehicle)
     }
 
-    override suspend fun attachDriver(vehicle: String, driver: String) = kernel.context.call {
+    override suspend fun attachDriver(vehicle: String, driver: String) = kernel.durably {
         kernel.controllers.attach(vehicle, driver)
     }
 
     override suspend fun setDriverEnabled(vehicle: String, enabled: Boolean) =
-        kernel.context.call { kernel.controllers.setDriverEnabled(vehicle, enabled) }
+        kernel.durably { kernel.controllers.setDriverEnabled(vehicle, enabled) }
 
     override suspend fun sendDriverMessage(vehicle: String, message: DriverMessage) =
         kernel.context.call { kernel.controllers.sendMessage(vehicle, message) }
@@ -90,7 +91,7 @@ class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
         kernel.controllers.recentEvents.of(vehicle)
     }
 
-    private suspend fun update(vehicle: String, change: (Vehicle) -> Vehicle) = kernel.context.call {
+    private suspend fun update(vehicle: String, change: (Vehicle) -> Vehicle) = kernel.durably {
         kernel.plant.updateVehicle(vehicle, change)
         kernel.dispatch()
     }
