@@ -55,19 +55,18 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
         val loading = CompletableFuture.supplyAsync { PlantModelLoader.load(options.model) }
         val config = config(options)
         Logging.apply(config)
+        Logging.toFile(config)
+        // The state store opens (and is read) meanwhile too.
+        val opening = CompletableFuture.supplyAsync { DurableState.open(config) }
         val installed = extensions(config)
-        val model = try {
-            loading.join()
-        } catch (failed: CompletionException) {
-            throw failed.cause ?: failed
-        }
+        val model = joined(loading)
         withContextClassLoader(installed.classLoader) {
             val application = KernelApplication(
                 config,
                 model,
                 installed.extensions,
                 installed::jarOf,
-                DurableState.open(config),
+                joined(opening),
             ) { signal?.request() }
             application.start()
             try {
@@ -77,6 +76,12 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
             }
         }
         return 0
+    }
+
+    private fun <T> joined(future: CompletableFuture<T>): T = try {
+        future.join()
+    } catch (failed: CompletionException) {
+        throw failed.cause ?: failed
     }
 
     private fun simulate(options: SimulateOptions): Int {
