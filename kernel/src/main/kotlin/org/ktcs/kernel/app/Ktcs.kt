@@ -1,6 +1,5 @@
 package org.ktcs.kernel.app
 
-import org.ktcs.kernel.store.DurableState
 import org.ktcs.kernel.bench.Bench
 import org.ktcs.kernel.config.ConfigException
 import org.ktcs.kernel.config.ConfigFile
@@ -14,6 +13,7 @@ import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.persistence.ModelFileException
 import org.ktcs.kernel.simulation.Fleet
 import org.ktcs.kernel.simulation.SimulationRunner
+import org.ktcs.kernel.store.DurableState
 import org.ktcs.kernel.web.KernelVersion
 import java.io.PrintStream
 import java.nio.file.Files

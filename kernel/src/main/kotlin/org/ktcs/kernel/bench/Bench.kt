@@ -46,7 +46,14 @@ class Bench(private val options: BenchOptions, private val out: PrintStream, pri
             if (options.workload == Workload.RESTART) {
                 RestartWorkload(options, figures).run(model, modelFile, log) { settings ->
                     val port = options.port.takeIf { it > 0 } ?: ServerSocket(0).use { it.localPort }
-                    KtcsUnderTest.start(options.launcher, modelFile, port, options.timeFactor, log, settings + options.settings)
+                    KtcsUnderTest.start(
+                        options.launcher,
+                        modelFile,
+                        port,
+                        options.timeFactor,
+                        log,
+                        settings + options.settings,
+                    )
                 }
                 return@repeat
             }

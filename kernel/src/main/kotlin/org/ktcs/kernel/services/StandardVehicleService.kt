@@ -12,8 +12,8 @@ import org.ktcs.api.model.Vehicle
 import org.ktcs.api.service.DriverAttachment
 import org.ktcs.api.service.VehicleService
 import org.ktcs.kernel.core.KernelCore
-import org.ktcs.kernel.vehicles.DriverPanels
 import org.ktcs.kernel.store.durably
+import org.ktcs.kernel.vehicles.DriverPanels
 
 class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
     private val panels = DriverPanels(kernel.controllers) { kernel.plant.staticModel() }

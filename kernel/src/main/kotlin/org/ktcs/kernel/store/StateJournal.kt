@@ -31,7 +31,7 @@ class StateJournal(private val store: StateStore, private val waitForCommit: Boo
 
     fun append(change: StoreChange) {
         lock.withLock {
-            val key = change.table to ((change as? StoreChange.Put)?.name ?: (change as? StoreChange.Delete)?.name ?: "")
+            val key = change.table to change.rowName
             if (change is StoreChange.Clear) {
                 pending.keys.removeIf { it.first == change.table }
             }
@@ -83,7 +83,12 @@ class StateJournal(private val store: StateStore, private val waitForCommit: Boo
                 if (failures > 0) log.warn("state store writable again after {} failed attempt(s)", failures)
                 return
             } catch (error: Exception) {
-                if (failures++ == 0) log.error("state store write failed; retrying until it succeeds: {}", error.message)
+                if (failures++ == 0) {
+                    log.error(
+                        "state store write failed; retrying until it succeeds: {}",
+                        error.message,
+                    )
+                }
                 if (!running && failures > CLOSE_RETRIES) {
                     log.error("state store: {} change(s) not written at shutdown", batch.size)
                     return

@@ -21,27 +21,16 @@ class StateRecorder(private val core: KernelCore, private val journal: StateJour
 
     fun onEvent(event: KernelEvent) {
         when (event) {
-            is TransportOrderEvent -> {
-                val order = event.current
-                if (order == null) {
-                    journal.append(StoreChange.Delete(StoreTable.TRANSPORT_ORDERS, event.previous!!.name))
-                } else {
-                    journal.append(StoreChange.Put(StoreTable.TRANSPORT_ORDERS, order.name, order))
-                    if (event.previous == null) recordNames()
-                }
-            }
-            is OrderSequenceEvent -> {
-                val sequence = event.current
-                if (sequence == null) {
-                    journal.append(StoreChange.Delete(StoreTable.ORDER_SEQUENCES, event.previous!!.name))
-                } else {
-                    journal.append(StoreChange.Put(StoreTable.ORDER_SEQUENCES, sequence.name, sequence))
-                    if (event.previous == null) recordNames()
-                }
-            }
+            is TransportOrderEvent -> record(StoreTable.TRANSPORT_ORDERS, event.previous, event.current) { it.name }
+
+            is OrderSequenceEvent -> record(StoreTable.ORDER_SEQUENCES, event.previous, event.current) { it.name }
+
             is VehicleEvent -> event.current?.let { recordVehicle(StoredVehicle.of(it, driverOf(it.name))) }
+
             is PathEvent -> event.current?.let { lock(it.name, StoredLock(StoredLock.PATH, it.locked)) }
+
             is LocationEvent -> event.current?.let { lock(it.name, StoredLock(StoredLock.LOCATION, it.locked)) }
+
             is UserNotificationEvent -> journal.append(
                 StoreChange.Put(
                     StoreTable.NOTIFICATIONS,
@@ -49,13 +38,25 @@ class StateRecorder(private val core: KernelCore, private val journal: StateJour
                     event.notification,
                 ),
             )
+
             is PlantModelReplacedEvent -> {
                 vehiclesWritten.clear()
                 journal.append(StoreChange.Clear(StoreTable.VEHICLES))
                 journal.append(StoreChange.Clear(StoreTable.PLANT_LOCKS))
             }
+
             else -> Unit
         }
+    }
+
+    /** An order or sequence changed: its row becomes [current], or goes with it; a new one moves the names on. */
+    private fun <T : Any> record(table: StoreTable, previous: T?, current: T?, name: (T) -> String) {
+        if (current == null) {
+            journal.append(StoreChange.Delete(table, name(previous!!)))
+            return
+        }
+        journal.append(StoreChange.Put(table, name(current), current))
+        if (previous == null) recordNames()
     }
 
     /** Writes every vehicle as it is now (after a restart put back what the store had). */

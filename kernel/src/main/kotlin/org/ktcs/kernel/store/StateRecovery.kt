@@ -43,11 +43,20 @@ class StateRecovery(private val core: KernelCore, private val state: StoredState
             val order = core.orders.get(stored.name) ?: return@forEach
             when (order.state) {
                 TransportOrderState.BEING_PROCESSED -> {
-                    val reason = if (mode == RecoveryMode.CONTINUE) continueOrder(order) else "persistence.recovery=WITHDRAW"
+                    val reason = if (mode == RecoveryMode.CONTINUE) {
+                        continueOrder(
+                            order,
+                        )
+                    } else {
+                        "persistence.recovery=WITHDRAW"
+                    }
                     if (reason == null) continued++ else withdraw(order, reason).also { withdrawn++ }
                 }
+
                 TransportOrderState.WITHDRAWN -> withdraw(order, "it was being withdrawn")
+
                 TransportOrderState.DISPATCHABLE -> core.dispatchable[order.name] = order
+
                 else -> core.lifecycle.onRestored(order)
             }
         }
@@ -69,7 +78,14 @@ class StateRecovery(private val core: KernelCore, private val state: StoredState
 
     private fun restoreLock(name: String, lock: StoredLock) {
         try {
-            if (lock.kind == StoredLock.PATH) core.plant.setPathLocked(name, lock.locked) else core.plant.setLocationLocked(name, lock.locked)
+            if (lock.kind == StoredLock.PATH) {
+                core.plant.setPathLocked(
+                    name,
+                    lock.locked,
+                )
+            } else {
+                core.plant.setLocationLocked(name, lock.locked)
+            }
         } catch (unknown: KernelException) {
             ignored += "${lock.kind} $name"
         }
@@ -79,7 +95,10 @@ class StateRecovery(private val core: KernelCore, private val state: StoredState
         val controllers = core.controllers
         try {
             val driver = stored.driver
-            if (driver != null && driver != controllers.controller(stored.name).driverName && controllers.factory(driver) != null) {
+            if (driver != null && driver != controllers.controller(
+                    stored.name,
+                ).driverName && controllers.factory(driver) != null
+            ) {
                 controllers.attach(stored.name, driver)
                 if (core.options.enableDriversOnStart) controllers.setDriverEnabled(stored.name, true)
             }
@@ -114,7 +133,12 @@ class StateRecovery(private val core: KernelCore, private val state: StoredState
 
     private fun withdraw(order: TransportOrder, reason: String) {
         core.orders.addHistory(order.name, KERNEL_RESTARTED, "withdrawn: $reason")
-        if (order.state != TransportOrderState.WITHDRAWN) core.orders.transition(order.name, TransportOrderState.WITHDRAWN)
+        if (order.state != TransportOrderState.WITHDRAWN) {
+            core.orders.transition(
+                order.name,
+                TransportOrderState.WITHDRAWN,
+            )
+        }
         core.orders.transition(order.name, TransportOrderState.FAILED, "withdrawn: the kernel restarted")
     }
 

@@ -18,10 +18,13 @@ class StateStore private constructor(private val connection: Connection, val des
             "INSERT INTO ${table.sqlName} (name, body) VALUES (?, ?) ON CONFLICT (name) DO UPDATE SET body = excluded.body",
         )
     }
-    private val deletes = StoreTable.entries.associateWith { connection.prepareStatement("DELETE FROM ${it.sqlName} WHERE name = ?") }
+    private val deletes = StoreTable.entries.associateWith {
+        connection.prepareStatement("DELETE FROM ${it.sqlName} WHERE name = ?")
+    }
 
     /** Every row of [table], in name order, as (name, JSON). */
     fun rows(table: StoreTable): List<Pair<String, String>> = connection.createStatement().use { statement ->
+        statement.fetchSize = FETCH_SIZE
         statement.executeQuery("SELECT name, body FROM ${table.sqlName} ORDER BY name").use { result ->
             buildList { while (result.next()) add(result.getString(1) to result.getString(2)) }
         }
@@ -49,10 +52,12 @@ class StateStore private constructor(private val connection: Connection, val des
                 setString(2, StateCodec.write(change.value))
                 addBatch()
             }
+
             is StoreChange.Delete -> deletes.getValue(change.table).run {
                 setString(1, change.name)
                 addBatch()
             }
+
             is StoreChange.Clear -> {
                 // Rows staged before the clear go first, so that the clear sees them.
                 upserts.getValue(change.table).executeBatch()
@@ -142,7 +147,11 @@ class StateStore private constructor(private val connection: Connection, val des
                 .locations("classpath:org/ktcs/kernel/store/migration")
                 .load()
                 .migrate()
-            log.info("state store schema migrated to version {} in {} ms", SCHEMA_VERSION, (System.nanoTime() - started) / 1_000_000)
+            log.info(
+                "state store schema migrated to version {} in {} ms",
+                SCHEMA_VERSION,
+                (System.nanoTime() - started) / 1_000_000,
+            )
         }
 
         private fun checkIntegrity(statement: java.sql.Statement, description: String) {
@@ -161,6 +170,7 @@ class StateStore private constructor(private val connection: Connection, val des
         )
 
         const val FILE_NAME = "state.db"
+        private const val FETCH_SIZE = 1000
 
         /** What a user can do about a store kTCS refuses to start over. */
         const val RECOVER =

@@ -12,15 +12,18 @@ internal object StoreSchema {
         val version = installedVersion(connection)
         when {
             version == StateStore.SCHEMA_VERSION -> Unit
+
             version == null && hasKtcsTables(connection) -> throw StoreException(
                 "$description has kTCS's tables but no schema history (flyway_schema_history); it was not made by " +
                     "kTCS or was damaged; ${StateStore.RECOVER}",
             )
+
             version != null && version > StateStore.SCHEMA_VERSION -> throw StoreException(
                 "$description has schema version $version, newer than the version ${StateStore.SCHEMA_VERSION} " +
                     "this kTCS knows: it was written by a newer kTCS. Start that version, or restore a backup made " +
                     "with this one",
             )
+
             else -> migrate()
         }
     }

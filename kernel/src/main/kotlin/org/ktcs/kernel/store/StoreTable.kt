@@ -14,6 +14,9 @@ enum class StoreTable(val sqlName: String) {
 sealed interface StoreChange {
     val table: StoreTable
 
+    /** The row it changes; empty for a change of the whole table. */
+    val rowName: String get() = (this as? Put)?.name ?: (this as? Delete)?.name ?: ""
+
     data class Put(override val table: StoreTable, val name: String, val value: Any) : StoreChange
 
     data class Delete(override val table: StoreTable, val name: String) : StoreChange

@@ -160,7 +160,9 @@ class DurableStateTest : FunSpec({
 
     test("the order-pool sweep deletes from the store too") {
         val directory = tempStore()
-        RestartableKernel(RestartableKernel.settingsFor(directory, "orderpool.sweepAge=0", "orderpool.sweepInterval=1000")).run {
+        RestartableKernel(
+            RestartableKernel.settingsFor(directory, "orderpool.sweepAge=0", "orderpool.sweepInterval=1000"),
+        ).run {
             onKernel { createTransportOrder(order("Order-1")) }
             runUntil { orders.get("Order-1")?.state == TransportOrderState.FINISHED }
             committed()

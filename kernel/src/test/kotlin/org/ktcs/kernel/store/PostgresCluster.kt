@@ -17,7 +17,17 @@ class PostgresCluster private constructor(private val bin: Path, private val dir
     val user = "ktcs"
 
     override fun close() {
-        run(listOf(bin.resolve("pg_ctl").toString(), "-D", directory.resolve("data").toString(), "-m", "immediate", "-w", "stop"))
+        run(
+            listOf(
+                bin.resolve("pg_ctl").toString(),
+                "-D",
+                directory.resolve("data").toString(),
+                "-m",
+                "immediate",
+                "-w",
+                "stop",
+            ),
+        )
         directory.toFile().deleteRecursively()
     }
 
@@ -43,7 +53,9 @@ class PostgresCluster private constructor(private val bin: Path, private val dir
             if (isRoot()) ProcessBuilder("chown", "postgres", directory.toString()).start().waitFor()
             val cluster = PostgresCluster(bin, directory, port)
             val data = directory.resolve("data").toString()
-            cluster.run(listOf(bin.resolve("initdb").toString(), "-D", data, "-U", "ktcs", "--auth=trust", "-E", "UTF8"))
+            cluster.run(
+                listOf(bin.resolve("initdb").toString(), "-D", data, "-U", "ktcs", "--auth=trust", "-E", "UTF8"),
+            )
             cluster.run(
                 listOf(
                     bin.resolve("pg_ctl").toString(), "-D", data, "-w", "-l", directory.resolve("log").toString(),
