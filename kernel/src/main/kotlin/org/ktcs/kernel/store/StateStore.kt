@@ -97,6 +97,8 @@ class StateStore private constructor(private val connection: Connection, val des
             val connection = connect(description, "jdbc:sqlite:$file", "", "", existed)
             try {
                 connection.createStatement().use { statement ->
+                    // Another kTCS holding the store is reported after a second, not after SQLite's default wait.
+                    statement.execute("PRAGMA busy_timeout=$BUSY_TIMEOUT_MILLIS")
                     checkIntegrity(statement, description)
                     statement.execute("PRAGMA journal_mode=WAL")
                     statement.execute("PRAGMA synchronous=${if (synchronous) "FULL" else "NORMAL"}")
@@ -130,6 +132,7 @@ class StateStore private constructor(private val connection: Connection, val des
             existed: Boolean,
         ): StateStore = try {
             StoreSchema.ensure(connection, description) { migrate(url, user, password) }
+            lockForThisKtcs(connection, description)
             connection.autoCommit = false
             StateStore(connection, description)
         } catch (error: SQLException) {
@@ -139,6 +142,27 @@ class StateStore private constructor(private val connection: Connection, val des
             connection.close()
             throw error
         }
+
+        /** One kTCS per store: a second one started on the same store must not write into it. */
+        private fun lockForThisKtcs(connection: Connection, description: String) {
+            connection.createStatement().use { statement ->
+                if (connection.metaData.databaseProductName.contains("SQLite", ignoreCase = true)) {
+                    // Held until the connection closes (after the migration, which uses a connection of its own).
+                    statement.execute("PRAGMA locking_mode=EXCLUSIVE")
+                    statement.execute("BEGIN EXCLUSIVE")
+                    statement.execute("COMMIT")
+                } else {
+                    val locked = statement.executeQuery("SELECT pg_try_advisory_lock($ADVISORY_LOCK)").use {
+                        it.next() && it.getBoolean(1)
+                    }
+                    if (!locked) throw StoreException(inUse(description))
+                }
+            }
+        }
+
+        private fun inUse(description: String) =
+            "$description is in use by another kTCS (or another program): stop that one first, or give this one " +
+                "another kernel.dataDirectory (or persistence.url)"
 
         private fun migrate(url: String, user: String, password: String) {
             val started = System.nanoTime()
@@ -163,7 +187,16 @@ class StateStore private constructor(private val connection: Connection, val des
             }
         }
 
-        private fun unreadable(description: String, error: SQLException, existed: Boolean) = StoreException(
+        private fun unreadable(description: String, error: SQLException, existed: Boolean) = if (isBusy(error)) {
+            StoreException(inUse(description), error)
+        } else {
+            damaged(description, error, existed)
+        }
+
+        private fun isBusy(error: SQLException) =
+            error.message.orEmpty().let { "SQLITE_BUSY" in it || "database is locked" in it }
+
+        private fun damaged(description: String, error: SQLException, existed: Boolean) = StoreException(
             "$description cannot be ${if (existed) "read" else "created"}: ${error.message?.lines()?.first()}; " +
                 if (existed) RECOVER else "check the directory's permissions or persistence.url and its credentials",
             error,
@@ -171,6 +204,8 @@ class StateStore private constructor(private val connection: Connection, val des
 
         const val FILE_NAME = "state.db"
         private const val FETCH_SIZE = 1000
+        private const val ADVISORY_LOCK = 18_180_118L
+        private const val BUSY_TIMEOUT_MILLIS = 1_000
 
         /** What a user can do about a store kTCS refuses to start over. */
         const val RECOVER =

@@ -160,13 +160,15 @@ class DurableStateTest : FunSpec({
 
     test("the order-pool sweep deletes from the store too") {
         val directory = tempStore()
-        RestartableKernel(
-            RestartableKernel.settingsFor(directory, "orderpool.sweepAge=0", "orderpool.sweepInterval=1000"),
-        ).run {
+        RestartableKernel(RestartableKernel.settingsFor(directory)).run {
             onKernel { createTransportOrder(order("Order-1")) }
             runUntil { orders.get("Order-1")?.state == TransportOrderState.FINISHED }
-            committed()
-            storedNames(directory, "transport_orders") shouldContain "Order-1"
+            crash()
+        }
+        storedNames(directory, "transport_orders") shouldContain "Order-1"
+
+        val sweeping = RestartableKernel.settingsFor(directory, "orderpool.sweepAge=0", "orderpool.sweepInterval=1000")
+        RestartableKernel(sweeping).run {
             runUntil { orders.get("Order-1") == null }
             crash()
         }
@@ -186,6 +188,14 @@ class DurableStateTest : FunSpec({
         error.message!! shouldContain "move it aside"
         error.message!! shouldContain "backup"
         Files.readAllBytes(file) shouldBe bytes
+    }
+
+    test("a second kTCS on the same store is refused while the first one runs") {
+        val directory = tempStore()
+        RestartableKernel(RestartableKernel.settingsFor(directory)).use {
+            val config = ConfigLoader().load(null, emptyMap(), RestartableKernel.settingsFor(directory))
+            shouldThrow<StoreException> { DurableState.open(config) }.message!! shouldContain "in use by another kTCS"
+        }
     }
 
     test("a store whose rows cannot be read, or from a newer kTCS, is refused") {
