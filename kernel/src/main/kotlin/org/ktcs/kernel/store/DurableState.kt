@@ -24,9 +24,6 @@ class DurableState private constructor(
     private var recovery: StateRecovery? = null
     private var recorder: StateRecorder? = null
 
-    /** Commits written so far (for figures). */
-    val commitCount: Long get() = journal.commitCount
-
     /** Puts the stored objects back, then records every change; before the kernel starts. */
     fun restoreInto(core: KernelCore) {
         recovery = StateRecovery(core, stored, mode).also { it.restore() }

@@ -24,11 +24,6 @@ class StateJournal(private val store: StateStore, private val waitForCommit: Boo
     private var notificationsWritten = 0L
     private val writer = thread(name = "state-store-writer", isDaemon = true) { writeLoop() }
 
-    /** Commits so far, for the benchmark's and the tests' figures. */
-    @Volatile
-    var commitCount = 0L
-        private set
-
     fun append(change: StoreChange) {
         lock.withLock {
             val key = change.table to change.rowName
@@ -49,7 +44,7 @@ class StateJournal(private val store: StateStore, private val waitForCommit: Boo
         if (committed.value < mark) committed.first { it >= mark }
     }
 
-    /** Writes what is pending and stops the writer; waits up to [timeoutMillis]. */
+    /** Writes what is pending and stops the writer (waiting at most 15 s for a store that cannot be written). */
     override fun close() {
         lock.withLock {
             running = false
@@ -70,7 +65,6 @@ class StateJournal(private val store: StateStore, private val waitForCommit: Boo
             }
             writeUntilDone(batch)
             committed.value = upTo
-            commitCount++
         }
     }
 
