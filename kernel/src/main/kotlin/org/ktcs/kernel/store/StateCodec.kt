@@ -21,6 +21,7 @@ import org.ktcs.api.order.Step
 import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.order.VehicleOrientation
 import java.time.Instant
+import java.util.concurrent.ConcurrentHashMap
 
 /**
  * The JSON form of the stored objects. Instants are written as `seconds:nanos`, which holds every instant exactly
@@ -64,6 +65,11 @@ object StateCodec {
             generator.writeString("${value.epochSecond}:${value.nano}")
     }
 
+    // The names of the plant's points and paths, one instance each: 100,000 stored orders repeat them millions of times.
+    private val plantNames = ConcurrentHashMap<String, String>()
+
+    private fun shared(name: String): String = plantNames.putIfAbsent(name, name) ?: name
+
     // A route step as a six-element array: routes are most of a stored order, and a restart reads 100,000 of them.
     private object StepWriter : JsonSerializer<Step>() {
         override fun serialize(value: Step, generator: JsonGenerator, serializers: SerializerProvider) {
@@ -81,9 +87,9 @@ object StateCodec {
     private object StepReader : JsonDeserializer<Step>() {
         override fun deserialize(parser: JsonParser, context: DeserializationContext): Step {
             check(parser.isExpectedStartArrayToken) { "a route step must be an array" }
-            val path = parser.nextTextValue()
-            val source = parser.nextTextValue()
-            val destination = checkNotNull(parser.nextTextValue()) { "a route step needs a destination point" }
+            val path = parser.nextTextValue()?.let(::shared)
+            val source = parser.nextTextValue()?.let(::shared)
+            val destination = shared(checkNotNull(parser.nextTextValue()) { "a route step needs a destination point" })
             val orientation = VehicleOrientation.valueOf(parser.nextTextValue())
             parser.nextToken()
             val routeIndex = parser.intValue

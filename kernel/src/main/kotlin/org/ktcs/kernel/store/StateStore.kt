@@ -22,11 +22,24 @@ class StateStore private constructor(private val connection: Connection, val des
         connection.prepareStatement("DELETE FROM ${it.sqlName} WHERE name = ?")
     }
 
-    /** Every row of [table], in name order, as (name, JSON). */
-    fun rows(table: StoreTable): List<Pair<String, String>> = connection.createStatement().use { statement ->
-        statement.fetchSize = FETCH_SIZE
-        statement.executeQuery("SELECT name, body FROM ${table.sqlName} ORDER BY name").use { result ->
-            buildList { while (result.next()) add(result.getString(1) to result.getString(2)) }
+    /**
+     * Every row of [table], in name order, as (name, JSON), handed to [chunk] [FETCH_SIZE] rows at a time: the JSON of
+     * 100,000 orders is several times the size of the orders, and must not be held all at once.
+     */
+    fun rows(table: StoreTable, chunk: (List<Pair<String, String>>) -> Unit) {
+        connection.createStatement().use { statement ->
+            statement.fetchSize = FETCH_SIZE
+            statement.executeQuery("SELECT name, body FROM ${table.sqlName} ORDER BY name").use { result ->
+                val rows = ArrayList<Pair<String, String>>(FETCH_SIZE)
+                while (result.next()) {
+                    rows += result.getString(1) to result.getString(2)
+                    if (rows.size == FETCH_SIZE) {
+                        chunk(rows)
+                        rows.clear()
+                    }
+                }
+                if (rows.isNotEmpty()) chunk(rows)
+            }
         }
     }
 
@@ -203,7 +216,7 @@ class StateStore private constructor(private val connection: Connection, val des
         )
 
         const val FILE_NAME = "state.db"
-        private const val FETCH_SIZE = 1000
+        const val FETCH_SIZE = 1000
         private const val ADVISORY_LOCK = 18_180_118L
         private const val BUSY_TIMEOUT_MILLIS = 1_000
 

@@ -16,21 +16,34 @@ data class StoredState(
     val isEmpty: Boolean get() = orders.isEmpty() && sequences.isEmpty() && vehicles.isEmpty() && locks.isEmpty()
 
     companion object {
+        private fun <T> parseRow(
+            store: StateStore,
+            table: StoreTable,
+            name: String,
+            json: String,
+            parse: (String) -> T,
+        ): T =
+            try {
+                parse(json)
+            } catch (error: Exception) {
+                throw StoreException(
+                    "${store.description}: row '$name' of table ${table.sqlName} cannot be read " +
+                        "(${error.message?.lines()?.first()}); ${StateStore.RECOVER}",
+                    error,
+                )
+            }
+
         /** Reads [store]; a row that cannot be read stops the start with a [StoreException] naming it. */
         fun load(store: StateStore): StoredState {
-            fun <T> read(table: StoreTable, parse: (String) -> T): List<Pair<String, T>> =
-                // Parsed on all cores: reading 100,000 orders is most of a restart's work.
-                store.rows(table).parallelStream().map { (name, json) ->
-                    try {
-                        name to parse(json)
-                    } catch (error: Exception) {
-                        throw StoreException(
-                            "${store.description}: row '$name' of table ${table.sqlName} cannot be read " +
-                                "(${error.message?.lines()?.first()}); ${StateStore.RECOVER}",
-                            error,
-                        )
-                    }
-                }.toList()
+            fun <T> read(table: StoreTable, parse: (String) -> T): List<Pair<String, T>> {
+                val parsed = ArrayList<Pair<String, T>>()
+                // Each chunk parsed on all cores: reading 100,000 orders is most of a restart's work.
+                store.rows(table) { chunk ->
+                    chunk.parallelStream().map { (name, json) -> name to parseRow(store, table, name, json, parse) }
+                        .forEachOrdered(parsed::add)
+                }
+                return parsed
+            }
             return StoredState(
                 orders = read(StoreTable.TRANSPORT_ORDERS, StateCodec::order).map { it.second }
                     .sortedBy { it.creationTime },
