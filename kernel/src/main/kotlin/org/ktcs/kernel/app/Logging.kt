@@ -29,13 +29,18 @@ object Logging {
     fun toFile(config: KtcsConfig): Path? {
         val days = config[PersistenceSettings.logFileMaxHistory]
         val root = LoggerFactory.getLogger(org.slf4j.Logger.ROOT_LOGGER_NAME) as? Logger ?: return null
+        // One log file per process: a kTCS started again in the same JVM (tests) replaces the previous one's.
+        root.getAppender(FILE_APPENDER)?.let {
+            root.detachAppender(it)
+            it.stop()
+        }
         if (days == 0) return null
         val context = root.loggerContext
         val directory = Path.of(config[KtcsSettings.dataDirectory]).resolve("logs").toAbsolutePath()
         val file = directory.resolve("ktcs.log")
         val appender = RollingFileAppender<ILoggingEvent>().apply {
             this.context = context
-            name = "FILE"
+            name = FILE_APPENDER
             this.file = file.toString()
         }
         SizeAndTimeBasedRollingPolicy<ILoggingEvent>().apply {
@@ -53,6 +58,8 @@ object Logging {
         root.addAppender(appender)
         return file
     }
+
+    private const val FILE_APPENDER = "FILE"
 
     private fun encoder(context: LoggerContext) = PatternLayoutEncoder().apply {
         this.context = context
