@@ -28,6 +28,10 @@ dependencies {
     api(libs.jackson.module.kotlin)
     api(libs.jackson.dataformat.yaml)
     api(libs.logback.classic)
+    api(libs.sqlite.jdbc)
+    api(libs.postgresql)
+    api(libs.flyway.core)
+    api(libs.flyway.database.postgresql)
     runtimeOnly(libs.swagger.ui)
 
     testImplementation(libs.mockk)

@@ -1,6 +1,7 @@
 package org.ktcs.e2e
 
 import java.io.IOException
+import java.nio.file.Files
 import java.nio.file.Path
 import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit
@@ -18,6 +19,13 @@ class KtcsProcess(vararg args: String, workingDirectory: Path = RepositoryRoot.p
             .directory(workingDirectory.toFile())
             .redirectErrorStream(true)
             .also { it.environment().keys.removeIf { key -> key.startsWith("KTCS_") } }
+            // Nothing kept between tests, nor in the repository's data/ (state store, log files), unless a test
+            // asks for it with --set.
+            .also {
+                it.environment()["KTCS_PERSISTENCE_DURABILITY"] = "OFF"
+                it.environment()["KTCS_KERNEL_DATADIRECTORY"] =
+                    Files.createTempDirectory("ktcs-e2e-data").toString()
+            }
             .start()
     private val lines = LinkedBlockingQueue<String>()
     private val seen = mutableListOf<String>()
@@ -61,6 +69,12 @@ class KtcsProcess(vararg args: String, workingDirectory: Path = RepositoryRoot.p
     fun output(): String {
         lines.drainTo(seen)
         return seen.joinToString("\n")
+    }
+
+    /** Kills the process at once (SIGKILL, as `kill -9`): no shutdown hook runs. */
+    fun kill() {
+        process.destroyForcibly()
+        process.waitFor(30, TimeUnit.SECONDS)
     }
 
     override fun close() {

@@ -79,7 +79,8 @@ class LoopbackDriver(
     // end-snippet
 
     private fun placeAtStart(known: Vehicle) {
-        val name = vehicle.position ?: known.properties[LoopbackProperties.INITIAL_POSITION] ?: known.currentPosition
+        // A restarted kernel knows where the vehicle was last (the state store): it resumes there, not at its start.
+        val name = vehicle.position ?: known.currentPosition ?: known.properties[LoopbackProperties.INITIAL_POSITION]
             ?: return placeUnpositioned(known)
         val point = context.plantModel.point(name)
         if (point == null) {

@@ -74,7 +74,7 @@ object CommandLine {
         |       ktcs simulate [--model FILE | --grid WxH | --warehouse WxH] [--vehicles N] [--orders M] [--seed S]
         |                     [--virtual-time | --real-time] [--time-factor F] [--set key=value]...
         |                                                          benchmark the kernel with simulated vehicles
-        |       ktcs bench [demo | batch] [--model FILE] [--runs N] [--url URL [--pid PID]] [--orders N] ...
+        |       ktcs bench [demo | batch | restart] [--model FILE] [--runs N] [--url URL [--pid PID]] [--orders N] ...
         |                                                          measure a running kTCS through its web API
         |                                                          (ktcs bench --help lists every option)
         |       ktcs --help | --version
@@ -206,11 +206,13 @@ object CommandLine {
     }
 
     val benchUsage: String = """
-        |Usage: ktcs bench [demo | batch] [options]
+        |Usage: ktcs bench [demo | batch | restart] [options]
         |  demo    start-up, memory, kernel CPU per finished order (--cpu-batches), order creation with 1 and 8
         |          clients (--posts each), GET /v1/transportOrders with --pool orders (issue #12's workload)
         |  batch   --orders orders posted at once; finished/failed, CPU per order, makespan and its lower bound,
         |          assignment latency, deadlock notifications, double allocations and shared positions
+        |  restart a state store with --stored-final final and --stored-open open orders; seconds until the
+        |          restarted kTCS's web API answers (issue #18)
         |Options:
         |  --model FILE          plant the orders come from and the started kTCS loads (default: the demo plant)
         |  --grid WxH            a generated one-way grid plant instead of --model (as ktcs simulate --grid)
@@ -230,6 +232,8 @@ object CommandLine {
         |  --orders N            batch: orders posted at once (default 200)
         |  --operating-time MS   batch: simulated ms per operation, for the lower bound (default 5000)
         |  --stall-timeout S     seconds without a finished order that end a run (default 60)
+        |  --stored-final N      restart: final orders in the store (default 100000)
+        |  --stored-open N       restart: DISPATCHABLE orders in the store (default 1000)
     """.trimMargin()
 
     private fun parseBenchOptions(args: List<String>): BenchOptions {
@@ -237,6 +241,7 @@ object CommandLine {
         val rest = when (args.firstOrNull()) {
             "demo" -> args.drop(1)
             "batch" -> args.drop(1).also { options = options.copy(workload = Workload.BATCH) }
+            "restart" -> args.drop(1).also { options = options.copy(workload = Workload.RESTART) }
             else -> args
         }
         forEachOption(rest) { name, value ->
@@ -278,6 +283,10 @@ object CommandLine {
                 "--operating-time" -> options.copy(operatingMillis = positive(name, value()).toLong())
 
                 "--stall-timeout" -> options.copy(stallSeconds = positiveDecimal(name, value()))
+
+                "--stored-final" -> options.copy(storedFinal = positive(name, value()))
+
+                "--stored-open" -> options.copy(storedOpen = positive(name, value()))
 
                 else -> throw UsageException("unknown bench option '$name' (ktcs bench --help lists them)")
             }

@@ -18,6 +18,7 @@ import org.ktcs.kernel.extension.ExtensionFailures
 import org.ktcs.kernel.extension.describe
 import org.ktcs.kernel.extension.from
 import org.ktcs.kernel.kernelModule
+import org.ktcs.kernel.store.DurableState
 import org.ktcs.kernel.web.KernelVersion
 import org.ktcs.kernel.web.ShutdownRequest
 import org.ktcs.kernel.web.WebServer
@@ -34,6 +35,8 @@ class KernelApplication(
     private val extensions: List<KtcsExtension>,
     /** The jar an extension came from (for the ready line and error messages), `null` for the class path. */
     private val jarOf: (KtcsExtension) -> Path? = { null },
+    /** The state store, opened by the caller; `null` keeps nothing across runs (tests, persistence.durability=OFF). */
+    private val durableState: DurableState? = null,
     private val shutdownRequest: ShutdownRequest = ShutdownRequest {},
 ) {
     private val log = LoggerFactory.getLogger(KernelApplication::class.java)
@@ -72,7 +75,13 @@ class KernelApplication(
         }
         koin = app
         val core = app.koin.get<KernelCore>()
-        runBlocking { context.call { core.start() } }
+        runBlocking {
+            context.call {
+                durableState?.restoreInto(core)
+                core.start()
+                durableState?.resumeIn(core)
+            }
+        }
         coreStarted = true
         app.createEagerInstances()
         val webAddress = app.koin.get<WebServer>().start()
@@ -88,6 +97,7 @@ class KernelApplication(
             val core = app.koin.get<KernelCore>()
             runBlocking { context.call { core.stop() } }
             context.close()
+            durableState?.close()
             app.close()
         }
         koin = null
@@ -105,6 +115,7 @@ class KernelApplication(
         }
         coreStarted = false
         runCatching { context.close() }.exceptionOrNull()?.let(failure::addSuppressed)
+        runCatching { durableState?.close() }.exceptionOrNull()?.let(failure::addSuppressed)
         runCatching { app.close() }.exceptionOrNull()?.let(failure::addSuppressed)
     }
 

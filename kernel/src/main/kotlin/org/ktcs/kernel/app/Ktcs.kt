@@ -14,6 +14,7 @@ import org.ktcs.kernel.persistence.ModelFileException
 import org.ktcs.kernel.simulation.Fleet
 import org.ktcs.kernel.simulation.SimulationRunner
 import org.ktcs.kernel.validation.InvalidModelException
+import org.ktcs.kernel.store.DurableState
 import org.ktcs.kernel.web.KernelVersion
 import java.io.PrintStream
 import java.nio.file.Files
@@ -55,14 +56,18 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
         val loading = CompletableFuture.supplyAsync { PlantModelLoader.load(options.model) }
         val (config, installed) = configAndExtensions(options)
         Logging.apply(config)
-        val model = try {
-            loading.join()
-        } catch (failed: CompletionException) {
-            throw failed.cause ?: failed
-        }
+        Logging.toFile(config)
+        // The state store opens (and is read) meanwhile too.
+        val opening = CompletableFuture.supplyAsync { DurableState.open(config) }
+        val model = joined(loading)
         withContextClassLoader(installed.classLoader) {
-            val application =
-                KernelApplication(config, model, installed.extensions, installed::jarOf) { signal?.request() }
+            val application = KernelApplication(
+                config,
+                model,
+                installed.extensions,
+                installed::jarOf,
+                joined(opening),
+            ) { signal?.request() }
             application.start()
             try {
                 waitForShutdown()
@@ -71,6 +76,12 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
             }
         }
         return 0
+    }
+
+    private fun <T> joined(future: CompletableFuture<T>): T = try {
+        future.join()
+    } catch (failed: CompletionException) {
+        throw failed.cause ?: failed
     }
 
     private fun simulate(options: SimulateOptions): Int {

@@ -43,10 +43,26 @@ class Bench(private val options: BenchOptions, private val out: PrintStream, pri
         repeat(options.runs) { index ->
             err.println("ktcs bench: run ${index + 1} of ${options.runs} (kTCS output: $log)")
             val prefix = "Bench-${System.currentTimeMillis().toString(RADIX)}"
+            if (options.workload == Workload.RESTART) {
+                RestartWorkload(options, figures).run(model, modelFile, log) { settings ->
+                    val port = options.port.takeIf { it > 0 } ?: ServerSocket(0).use { it.localPort }
+                    KtcsUnderTest.start(
+                        options.launcher,
+                        modelFile,
+                        port,
+                        options.timeFactor,
+                        log,
+                        settings + options.settings,
+                    )
+                }
+                return@repeat
+            }
             open(log, modelFile).use { ktcs ->
                 val orders = BenchOrders(model, options.seed + index)
                 when (options.workload) {
                     Workload.DEMO -> DemoWorkload(options, figures).run(ktcs, orders, prefix)
+
+                    Workload.RESTART -> Unit
 
                     Workload.BATCH -> BatchWorkload(
                         options,

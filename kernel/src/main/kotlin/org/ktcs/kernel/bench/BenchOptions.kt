@@ -2,8 +2,8 @@ package org.ktcs.kernel.bench
 
 import java.nio.file.Path
 
-/** The two workloads of `ktcs bench`. */
-enum class Workload { DEMO, BATCH }
+/** The workloads of `ktcs bench`. */
+enum class Workload { DEMO, BATCH, RESTART }
 
 /**
  * What `ktcs bench` runs.
@@ -20,6 +20,8 @@ enum class Workload { DEMO, BATCH }
  * @property gets `GET /v1/transportOrders` requests timed.
  * @property orders orders the batch workload posts at once.
  * @property stallSeconds how long without a finished order ends a run.
+ * @property storedFinal restart: final orders in the state store kTCS starts on.
+ * @property storedOpen restart: DISPATCHABLE orders in it.
  */
 data class BenchOptions(
     val workload: Workload = Workload.DEMO,
@@ -41,4 +43,6 @@ data class BenchOptions(
     val operatingMillis: Long = 5000,
     val stallSeconds: Double = 60.0,
     val settings: List<String> = emptyList(),
+    val storedFinal: Int = 100_000,
+    val storedOpen: Int = 1_000,
 )

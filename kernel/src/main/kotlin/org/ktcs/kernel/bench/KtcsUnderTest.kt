@@ -1,6 +1,7 @@
 package org.ktcs.kernel.bench
 
 import java.io.File
+import java.nio.file.Files
 import java.nio.file.Path
 import java.util.concurrent.TimeUnit
 
@@ -43,6 +44,21 @@ class KtcsUnderTest private constructor(
             Thread.sleep(READY_POLL_MILLIS)
         }
         error("kTCS was not ready (web API answering, vehicles idle) within $timeoutSeconds s")
+    }
+
+    /** Waits until the web API answers (whatever the vehicles do); returns the seconds since the process started. */
+    fun awaitAnswering(timeoutSeconds: Long): Double {
+        val deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(timeoutSeconds)
+        while (System.nanoTime() < deadline) {
+            if (process != null && !process.isAlive) {
+                error("kTCS exited with code ${process.exitValue()} before it answered")
+            }
+            if ((port == null || isListening(port)) && client.vehicles() != null) {
+                return ((System.nanoTime() - startNanos) / NANOS_PER_SECOND).also { readySeconds = it }
+            }
+            Thread.sleep(READY_POLL_MILLIS)
+        }
+        error("kTCS's web API did not answer within $timeoutSeconds s")
     }
 
     private fun isListening(port: Int): Boolean {
@@ -101,6 +117,9 @@ class KtcsUnderTest private constructor(
                 "orderpool.sweepAge=$DAY_MILLIS",
                 // The batch workload follows every event; a burst of orders must not make kTCS drop some for it.
                 "web.webSocketBufferSize=$WEB_SOCKET_BUFFER",
+                // Figures stay those of the kernel alone unless a benchmark asks for the store (extraSettings win).
+                "persistence.durability=OFF",
+                "kernel.dataDirectory=${Files.createTempDirectory("ktcs-bench-data")}",
             ) + extraSettings
             val command = buildList {
                 add(launcher.toString())

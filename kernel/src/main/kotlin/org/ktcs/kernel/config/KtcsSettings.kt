@@ -242,8 +242,62 @@ object KtcsSettings {
         dispatcherRechargeIdleVehicles,
         dispatcherKeepRecharging,
         dispatcherRecoveryThreshold,
-    ) + WatchdogSettings.all + extensionsDirectory + dataDirectory
+    ) + WatchdogSettings.all + extensionsDirectory + dataDirectory + PersistenceSettings.all
 }
 
 /** Log levels a user can choose, in SLF4J's names. */
 enum class LogLevel { ERROR, WARN, INFO, DEBUG, TRACE }
+
+// Durable state (#18): where the kernel's state is stored, how durably, how it comes back, and the log file.
+object PersistenceSettings {
+    val durability = enumSetting(
+        "persistence.durability",
+        Durability.COMMIT,
+        "When a change counts as stored: COMMIT answers a client's order only once it is committed (survives a " +
+            "crash); ASYNC answers at once and commits within milliseconds (a crash may lose the last changes); OFF " +
+            "stores nothing (tests and benchmarks; a restart starts empty).",
+    )
+    val url = Setting(
+        "persistence.url",
+        "",
+        "JDBC URL of the state store, e.g. jdbc:postgresql://db.example.com/ktcs (empty: the embedded SQLite file " +
+            "state.db in kernel.dataDirectory).",
+        { it },
+    )
+    val username = Setting("persistence.username", "", "User name for persistence.url (PostgreSQL).", { it })
+    val password = Setting("persistence.password", "", "Password for persistence.url (PostgreSQL).", { it })
+    val recovery = enumSetting(
+        "persistence.recovery",
+        RecoveryMode.CONTINUE,
+        "What happens at start to orders that were BEING_PROCESSED when kTCS stopped: CONTINUE re-places each " +
+            "vehicle at its last known position and reroutes it to its remaining destinations; WITHDRAW withdraws " +
+            "them (their history says the kernel restarted).",
+    )
+    val logFileMaxSize = longSetting(
+        "log.file.maxSize",
+        50,
+        1L..100_000L,
+        "MB a log file (kernel.dataDirectory/logs/ktcs.log) grows to before it rolls over; it also rolls daily.",
+    )
+    val logFileMaxHistory = intSetting(
+        "log.file.maxHistory",
+        30,
+        0..3650,
+        "Days of rolled-over log files kept (0: log to the console only, no file).",
+    )
+    val logFileTotalSizeCap = longSetting(
+        "log.file.totalSizeCap",
+        1000,
+        1L..1_000_000L,
+        "MB all log files together may take; the oldest are deleted beyond it.",
+    )
+
+    val all: List<Setting<*>> =
+        listOf(durability, url, username, password, recovery, logFileMaxSize, logFileMaxHistory, logFileTotalSizeCap)
+}
+
+/** When a change counts as stored (`persistence.durability`). */
+enum class Durability { COMMIT, ASYNC, OFF }
+
+/** What happens at start to orders a vehicle was processing (`persistence.recovery`). */
+enum class RecoveryMode { CONTINUE, WITHDRAW }

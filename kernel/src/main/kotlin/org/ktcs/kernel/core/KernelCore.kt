@@ -34,6 +34,7 @@ import org.ktcs.kernel.orders.TransportOrderFactory
 import org.ktcs.kernel.orders.TransportOrderPool
 import org.ktcs.kernel.validation.InvalidModelException
 import org.ktcs.kernel.validation.PlantModelValidator
+import org.ktcs.kernel.store.CommitBarrier
 import org.ktcs.kernel.vehicles.VehicleControllers
 import org.ktcs.kernel.vehicles.VehicleEnvironment
 import org.ktcs.kernel.workingset.ObjectNames
@@ -58,9 +59,9 @@ class KernelCore(
     val plant = PlantState(model, events)
     val orders = TransportOrderPool(events, context)
     val sequences = OrderSequencePool(events, context)
-    private val names = ObjectNames(context)
+    val names = ObjectNames(context)
     private val factory = TransportOrderFactory(context, names)
-    private val lifecycle = OrderLifecycle(orders, sequences, { router }, options.dismissUnroutableOrders)
+    val lifecycle = OrderLifecycle(orders, sequences, { router }, options.dismissUnroutableOrders)
     private val trigger = DispatchTrigger(
         context,
         dispatcherProvider,
@@ -68,6 +69,9 @@ class KernelCore(
         options.newOrderDispatchDelayMillis,
     )
     val dispatchContext = KernelDispatchContext(this)
+
+    /** Where requests wait for their changes to be committed to the state store (none without a store). */
+    var commits: CommitBarrier = CommitBarrier.NONE
     val controllers = VehicleControllers(
         VehicleEnvironment(context, events, plant, orders, notifications, {
             scheduler
@@ -124,6 +128,11 @@ class KernelCore(
 
     /** The DISPATCHABLE orders, oldest first (a read-only view). */
     fun dispatchableOrders(): Collection<TransportOrder> = dispatchable.values
+
+    /** Puts back a DISPATCHABLE order read from the state store at start (no event: nothing changed). */
+    fun restoreDispatchable(order: TransportOrder) {
+        dispatchable[order.name] = order
+    }
 
     fun nameTaken(name: String): Boolean =
         orders.contains(name) || sequences.get(name) != null || plant.staticModel().objectNamed(name) != null

@@ -24,4 +24,12 @@ class Notifications(private val events: EventBus, private val clock: KernelClock
     }
 
     fun recent(): List<UserNotification> = recent.toList()
+
+    /** Puts back the notifications of a previous run, oldest first, without publishing them again. */
+    fun restore(notifications: List<UserNotification>) {
+        notifications.takeLast(capacity).forEach {
+            if (recent.size == capacity) recent.removeFirst()
+            recent.addLast(it)
+        }
+    }
 }

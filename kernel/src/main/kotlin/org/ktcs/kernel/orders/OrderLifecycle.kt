@@ -40,6 +40,23 @@ class OrderLifecycle(
         }
     }
 
+    /**
+     * Takes up an order of a previous run: indexes what it waits for, and carries a RAW or ACTIVE one on as a new
+     * one would be (the run may have stopped between its creation and its activation).
+     */
+    fun onRestored(order: TransportOrder) {
+        if (order.state.isFinal) return
+        order.dependencies.forEach { dependants.getOrPut(it) { mutableSetOf() } += order.name }
+        if (order.state == RAW) {
+            if (dismissUnroutable && !router().isGenerallyRoutable(order)) {
+                orders.transition(order.name, UNROUTABLE, "no route connects the destinations")
+                return
+            }
+            orders.transition(order.name, ACTIVE)
+        }
+        activateIfReady(order.name)
+    }
+
     private fun onCreated(order: TransportOrder) {
         order.dependencies.forEach { dependants.getOrPut(it) { mutableSetOf() } += order.name }
         order.wrappingSequence?.let { sequence ->

@@ -19,6 +19,11 @@ class OrderSequencePool(private val events: EventBus, private val clock: KernelC
 
     fun all(): Collection<OrderSequence> = sequences.values
 
+    /** Puts back a sequence of a previous run as it was, without an event (before the kernel starts). */
+    fun restore(sequence: OrderSequence) {
+        sequences[sequence.name] = sequence
+    }
+
     fun add(sequence: OrderSequence): OrderSequence {
         if (sequence.name in sequences) throw ObjectExistsException("order sequence '${sequence.name}' exists already")
         val created = sequence.copy(

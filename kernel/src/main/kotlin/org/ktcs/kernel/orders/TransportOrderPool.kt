@@ -27,6 +27,11 @@ class TransportOrderPool(private val events: EventBus, private val clock: Kernel
 
     fun contains(name: String): Boolean = name in orders
 
+    /** Puts back an order of a previous run as it was, without an event (before the kernel starts). */
+    fun restore(order: TransportOrder) {
+        orders[order.name] = order
+    }
+
     fun add(order: TransportOrder): TransportOrder {
         if (order.name in orders) throw ObjectExistsException("transport order '${order.name}' exists already")
         val created = order.copy(history = order.history + HistoryEntry(clock.now(), HistoryCodes.ORDER_CREATED))

@@ -7,10 +7,11 @@ import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.api.service.TransportOrderService
 import org.ktcs.kernel.core.KernelCore
+import org.ktcs.kernel.store.durably
 
 class StandardTransportOrderService(private val kernel: KernelCore) : TransportOrderService {
     override suspend fun createTransportOrder(creation: TransportOrderCreation): TransportOrder =
-        kernel.context.call { kernel.createTransportOrder(creation) }
+        kernel.durably { kernel.createTransportOrder(creation) }
 
     override suspend fun transportOrder(name: String): TransportOrder? = kernel.context.call { kernel.orders.get(name) }
 
@@ -19,10 +20,10 @@ class StandardTransportOrderService(private val kernel: KernelCore) : TransportO
     }
 
     override suspend fun setIntendedVehicle(order: String, vehicle: String?) =
-        kernel.context.call { kernel.requests.setIntendedVehicle(order, vehicle) }
+        kernel.durably { kernel.requests.setIntendedVehicle(order, vehicle) }
 
     override suspend fun createOrderSequence(creation: OrderSequenceCreation): OrderSequence =
-        kernel.context.call { kernel.createOrderSequence(creation) }
+        kernel.durably { kernel.createOrderSequence(creation) }
 
     override suspend fun orderSequence(name: String): OrderSequence? = kernel.context.call {
         kernel.sequences.get(name)
@@ -32,7 +33,7 @@ class StandardTransportOrderService(private val kernel: KernelCore) : TransportO
         kernel.sequences.all().filter { intendedVehicle == null || it.intendedVehicle == intendedVehicle }
     }
 
-    override suspend fun markOrderSequenceComplete(name: String) = kernel.context.call {
+    override suspend fun markOrderSequenceComplete(name: String) = kernel.durably {
         kernel.markSequenceComplete(name)
     }
 }

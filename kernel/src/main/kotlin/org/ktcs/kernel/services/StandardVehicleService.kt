@@ -11,6 +11,7 @@ import org.ktcs.api.model.Vehicle
 import org.ktcs.api.service.DriverAttachment
 import org.ktcs.api.service.VehicleService
 import org.ktcs.kernel.core.KernelCore
+import org.ktcs.kernel.store.durably
 import org.ktcs.kernel.vehicles.DriverPanels
 
 class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
@@ -22,9 +23,9 @@ class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
     override suspend fun vehicle(name: String): Vehicle? = kernel.context.call { kernel.plant.vehicleOrNull(name) }
 
     override suspend fun setIntegrationLevel(vehicle: String, level: IntegrationLevel) =
-        kernel.context.call { kernel.controllers.setIntegrationLevel(vehicle, level) }
+        kernel.durably { kernel.controllers.setIntegrationLevel(vehicle, level) }
 
-    override suspend fun setPaused(vehicle: String, paused: Boolean) = kernel.context.call {
+    override suspend fun setPaused(vehicle: String, paused: Boolean) = kernel.durably {
         kernel.controllers.setPaused(vehicle, paused)
     }
 
@@ -36,7 +37,7 @@ class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
         update(vehicle) { it.copy(acceptableOrderTypes = types) }
 
     override suspend fun setEnergyLevelThresholdSet(vehicle: String, thresholds: EnergyLevelThresholdSet) =
-        kernel.context.call { kernel.requests.setEnergyLevelThresholds(vehicle, thresholds) }
+        kernel.durably { kernel.requests.setEnergyLevelThresholds(vehicle, thresholds) }
 
     override suspend fun setEnvelopeKey(vehicle: String, key: String?) = update(vehicle) { it.copy(envelopeKey = key) }
 
@@ -44,12 +45,12 @@ class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
         kernel.controllers.attachment(vehicle)
     }
 
-    override suspend fun attachDriver(vehicle: String, driver: String) = kernel.context.call {
+    override suspend fun attachDriver(vehicle: String, driver: String) = kernel.durably {
         kernel.controllers.attach(vehicle, driver)
     }
 
     override suspend fun setDriverEnabled(vehicle: String, enabled: Boolean) =
-        kernel.context.call { kernel.controllers.setDriverEnabled(vehicle, enabled) }
+        kernel.durably { kernel.controllers.setDriverEnabled(vehicle, enabled) }
 
     override suspend fun sendDriverMessage(vehicle: String, message: DriverMessage) =
         kernel.context.call { kernel.controllers.sendMessage(vehicle, message) }
@@ -68,7 +69,7 @@ class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
         kernel.controllers.recentEvents.of(vehicle)
     }
 
-    private suspend fun update(vehicle: String, change: (Vehicle) -> Vehicle) = kernel.context.call {
+    private suspend fun update(vehicle: String, change: (Vehicle) -> Vehicle) = kernel.durably {
         kernel.plant.updateVehicle(vehicle, change)
         kernel.dispatch()
     }

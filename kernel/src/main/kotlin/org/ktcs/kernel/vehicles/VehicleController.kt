@@ -58,7 +58,13 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
             remaining.map { QueuedCommand(it.command, CommandStage.QUEUED) }
 
     /** Starts [order], which is BEING_PROCESSED by this vehicle with a route for every drive order. */
-    fun assign(order: TransportOrder) {
+    fun assign(order: TransportOrder) = resume(order, 0)
+
+    /**
+     * Works on [order] from its drive order [index] on (0 for a new order; a later one when a restarted kernel
+     * continues an order), with a route from where the vehicle is for every drive order from [index].
+     */
+    fun resume(order: TransportOrder, index: Int) {
         check(currentOrder == null) { "vehicle '$name' is already processing '$currentOrder'" }
         currentOrder = order.name
         withdrawing = false
@@ -68,7 +74,7 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
                 orderSequence = order.wrappingSequence ?: it.orderSequence,
             ).withProcState(ProcState.PROCESSING_ORDER, env)
         }
-        startDriveOrder(0)
+        startDriveOrder(index)
     }
 
     private fun startDriveOrder(index: Int) {

@@ -11,8 +11,21 @@ class ObjectNames(private val clock: KernelClock) {
     private var lastMillis = -1L
     private var counter = 0L
 
+    /** The millisecond of the last name completed (-1 before the first); kept by the state store. */
+    val lastMillisUsed: Long get() = lastMillis
+
+    /** The counter of the last name completed within [lastMillisUsed]. */
+    val lastCounterUsed: Long get() = counter
+
+    /** Continues after the name made at [millis] with [counter] (the position of a previous run). */
+    fun resumeAfter(millis: Long, counter: Long) {
+        lastMillis = millis
+        this.counter = counter
+    }
+
     fun complete(prefix: String): String {
-        val millis = clock.now().toEpochMilli()
+        // Never behind the last name made, so that a clock set back (or a restart on a slower clock) reuses none.
+        val millis = maxOf(clock.now().toEpochMilli(), lastMillis)
         counter = if (millis == lastMillis) counter + 1 else 0
         lastMillis = millis
         return prefix + encode(millis, TIME_CHARACTERS) + encode(counter, COUNTER_CHARACTERS)

@@ -19,10 +19,15 @@ class KtcsTest : FunSpec({
     fun ktcs(vararg args: String, environment: Map<String, String> = emptyMap()): Run {
         val out = ByteArrayOutputStream()
         val err = ByteArrayOutputStream()
+        // A kTCS started here keeps nothing and writes no files into the module (state store, log file).
+        val scratch = mapOf(
+            "KTCS_PERSISTENCE_DURABILITY" to "OFF",
+            "KTCS_KERNEL_DATADIRECTORY" to Files.createTempDirectory("ktcs-test-data").toString(),
+        )
         val code = Ktcs(
             PrintStream(out, true),
             PrintStream(err, true),
-            environment,
+            scratch + environment,
         ).run(args.toList(), awaitShutdown = {
         })
         return Run(code, out.toString(), err.toString())
