@@ -6,7 +6,6 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
-import kotlinx.coroutines.launch
 import org.ktcs.api.service.KernelServices
 import org.ktcs.xmlchannels.orders.OrderChannelServer
 import org.ktcs.xmlchannels.orders.ScriptFiles
@@ -36,7 +35,8 @@ class XmlChannels(
     private val statusChannel = StatusChannelServer(
         StatusMessages(clock, settings.statusSeparator),
         settings.statusBufferSize,
-    )
+        scope,
+    ) { services.eventsAfter {}.second }
 
     /** The bound order channel port, once started. */
     var ordersPort: Int = -1
@@ -56,7 +56,6 @@ class XmlChannels(
             val orderChannel = OrderChannelServer(services.transportOrders, settings)
             ordersPort =
                 listen("XML order channel", settings.ordersPort, settings.ordersMaxConnections, orderChannel::serve)
-            scope.launch { statusChannel.broadcast(services.events()) }
             statusPort =
                 listen("XML status channel", settings.statusPort, settings.statusMaxConnections, statusChannel::serve)
         } catch (error: Exception) {

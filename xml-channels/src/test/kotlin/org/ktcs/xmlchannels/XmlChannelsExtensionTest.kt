@@ -5,8 +5,6 @@ import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldEndWith
-import kotlinx.coroutines.flow.first
-import kotlinx.coroutines.withTimeout
 import org.koin.dsl.koinApplication
 import org.koin.dsl.module
 import org.ktcs.api.service.KernelServices
@@ -16,6 +14,7 @@ import org.ktcs.xmlchannels.status.StatusClientSocket
 import java.net.BindException
 import java.net.ConnectException
 import java.net.ServerSocket
+import java.nio.file.Files
 import java.util.ServiceLoader
 
 class XmlChannelsExtensionTest : FunSpec({
@@ -31,11 +30,12 @@ class XmlChannelsExtensionTest : FunSpec({
 
     test("the channels listen as soon as the kernel's Koin application exists, and stop when it closes") {
         val services = FakeKernelServices()
+        val scripts = Files.createTempDirectory("ktcs-scripts")
         val app = koinApplication {
-            modules(module { single<KernelServices> { services } }, xmlChannelsModule { testSettings() })
+            modules(module { single<KernelServices> { services } }, xmlChannelsModule { testSettings(scripts) })
         }
-        // Nothing asked for the channels yet: they were created at start.
-        withTimeout(5_000) { services.events.subscriptionCount.first { it > 0 } }
+        // Nothing asked for the channels yet: they were started at start, which writes the scripts' template.
+        Files.list(scripts).use { it.count() } shouldBe 1L
         val channels = app.koin.get<XmlChannels>()
         val statusClient = StatusClientSocket(channels.statusPort)
         HostClient.send(channels.ordersPort, "<tcsOrderSet/>") shouldEndWith "<tcsResponseSet/>"

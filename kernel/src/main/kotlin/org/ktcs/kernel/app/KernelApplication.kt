@@ -19,6 +19,7 @@ import org.ktcs.kernel.extension.describe
 import org.ktcs.kernel.extension.from
 import org.ktcs.kernel.kernelModule
 import org.ktcs.kernel.store.DurableState
+import org.ktcs.kernel.web.KernelEventTap
 import org.ktcs.kernel.web.KernelVersion
 import org.ktcs.kernel.web.ShutdownRequest
 import org.ktcs.kernel.web.WebServer
@@ -122,7 +123,11 @@ class KernelApplication(
     private fun applicationModule() = module {
         single { KernelVersion.ofThisBuild() }
         single { WebServerInfo(accessKeyRequired = config[KtcsSettings.webAccessKey].isNotEmpty()) }
-        single { WebServer(get(), get(), get(), shutdownRequest, getAll()) }
+        single {
+            // The one place the web API reaches into the kernel core: GET /v1/events' buffer listens synchronously.
+            val events = get<KernelCore>().events
+            WebServer(get(), get(), get(), shutdownRequest, getAll(), KernelEventTap(events::listen))
+        }
     }
 
     private fun moduleOf(extension: KtcsExtension) = try {

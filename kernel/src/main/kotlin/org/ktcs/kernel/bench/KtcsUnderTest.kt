@@ -15,6 +15,7 @@ class KtcsUnderTest private constructor(
     val pid: Long?,
     private val startNanos: Long,
     private val port: Int? = null,
+    private val dataDirectory: Path? = null,
 ) : AutoCloseable {
     /** Seconds from starting the process to the web API answering with every vehicle idle; set by [awaitReady]. */
     var readySeconds: Double? = null
@@ -75,6 +76,7 @@ class KtcsUnderTest private constructor(
         process ?: return
         process.destroy()
         if (!process.waitFor(STOP_SECONDS, TimeUnit.SECONDS)) process.destroyForcibly().waitFor()
+        dataDirectory?.toFile()?.deleteRecursively()
     }
 
     companion object {
@@ -97,7 +99,8 @@ class KtcsUnderTest private constructor(
 
         /**
          * Starts [launcher] (`ktcs`) with [model] (or its demo plant), on [port], with loopback vehicles at [timeFactor]
-         * and finished orders kept for the whole run; its output goes to [log].
+         * and finished orders kept for the whole run, keeping its data in a temporary directory deleted when it is
+         * closed; its output goes to [log].
          */
         fun start(
             launcher: Path,
@@ -107,7 +110,9 @@ class KtcsUnderTest private constructor(
             log: File,
             extraSettings: List<String>,
         ): KtcsUnderTest {
+            val dataDirectory = Files.createTempDirectory("ktcs-bench-data-")
             val settings = listOf(
+                "kernel.dataDirectory=$dataDirectory",
                 "web.port=$port",
                 "web.bindAddress=127.0.0.1",
                 "xml.orders.port=0",
@@ -133,7 +138,8 @@ class KtcsUnderTest private constructor(
                 .redirectOutput(ProcessBuilder.Redirect.appendTo(log))
                 .start()
             // The launcher execs java, so the child's id is the kernel's.
-            return KtcsUnderTest(BenchClient("http://127.0.0.1:$port/v1"), process, process.pid(), startNanos, port)
+            val client = BenchClient("http://127.0.0.1:$port/v1")
+            return KtcsUnderTest(client, process, process.pid(), startNanos, port, dataDirectory)
         }
 
         private const val DAY_MILLIS = 86_400_000L

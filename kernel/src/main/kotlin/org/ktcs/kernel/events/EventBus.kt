@@ -38,6 +38,9 @@ class EventBus(private val context: KernelContext? = null) {
         return channel
     }
 
+    /** How many subscriptions are open now (each wakes its reader's thread for nearly every event). */
+    val subscriberCount: Int get() = subscribers.size
+
     /**
      * Publishes [event]. An event published by a listener while another is being delivered waits until that one
      * has reached everybody, so every listener and subscriber sees all events in the same order.

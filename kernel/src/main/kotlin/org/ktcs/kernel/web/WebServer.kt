@@ -70,6 +70,7 @@ class WebServer(
     private val services: KernelServices,
     private val shutdown: ShutdownRequest,
     private val contributions: List<WebContribution> = emptyList(),
+    private val eventTap: KernelEventTap? = null,
 ) {
     private var server: EmbeddedServer<*, *>? = null
 
@@ -88,7 +89,9 @@ class WebServer(
             allowLocalShutdown = config[KtcsSettings.webAllowLocalShutdown],
         )
         checkPortFree(host, port)
-        val module: Application.() -> Unit = { webModule(version, services, options, shutdown, contributions) }
+        val module: Application.() -> Unit = {
+            webModule(version, services, options, shutdown, contributions, eventTap)
+        }
         val tls = WebTls.from(config)
         val started = if (tls == null) {
             embeddedServer(CIO, port = port, host = host, module = module)
@@ -129,13 +132,17 @@ class WebServer(
     }
 }
 
-/** Installs the plugins and mounts the routes; also used by tests with Ktor's test host. */
+/**
+ * Installs the plugins and mounts the routes; also used by tests with Ktor's test host. [eventTap] fills the buffer
+ * of `GET /v1/events` in the kernel context; without it (tests) a subscription to [services]' events does.
+ */
 fun Application.webModule(
     version: KernelVersion,
     services: KernelServices,
     options: WebOptions = WebOptions(),
     shutdown: ShutdownRequest = ShutdownRequest {},
     contributions: List<WebContribution> = emptyList(),
+    eventTap: KernelEventTap? = null,
 ) {
     install(ContentNegotiation) { json(V1Json.json) }
     installErrorResponses()
@@ -143,7 +150,7 @@ fun Application.webModule(
     install(RequestSizeLimit) { maxBytes = options.maxRequestBodyBytes }
     install(WebSockets) { maxFrameSize = MAX_WEBSOCKET_FRAME_BYTES }
     val statusEvents = StatusEventBuffer()
-    launch { feed(statusEvents, services) }
+    if (eventTap != null) eventTap.listen(statusEvents::add) else launch { feed(statusEvents, services) }
     val webSockets = LiveWebSockets()
     monitor.subscribe(ApplicationStopPreparing) { webSockets.closeAll() }
     val document = lazy { ApiDocument.current }

@@ -200,6 +200,8 @@ class WebApiTest : FunSpec({
             ).jsonObject["statusMessages"]!!.jsonArray.size shouldBe
                 0
             ((System.nanoTime() - started) / 1_000_000 >= 250) shouldBe true
+            // The buffer listens in the kernel context: no subscription hands every event to another thread.
+            application.kernel.events.subscriberCount shouldBe 0
         } finally {
             application.stop()
         }

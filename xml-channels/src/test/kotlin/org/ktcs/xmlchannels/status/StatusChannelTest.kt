@@ -106,6 +106,23 @@ class StatusChannelTest : FunSpec({
 
         message shouldContain "orderState=\"RAW\""
     }
+
+    test("the channel follows the kernel's events only while a status client is connected") {
+        val services = FakeKernelServices()
+        withChannels(services) { channels ->
+            repeat(2) {
+                val client = StatusClientSocket(channels.statusPort)
+                withTimeout(5_000) { channels.statusClients.first { it == 1 } }
+                services.events.subscriptionCount.value shouldBe 1
+                services.events.emit(TransportOrderEvent(null, order))
+                client.next()!! shouldContain "orderState=\"RAW\""
+                client.close()
+                // With nobody connected, no thread is woken for every kernel event.
+                withTimeout(5_000) { services.events.subscriptionCount.first { it == 0 } }
+                channels.statusClients.value shouldBe 0
+            }
+        }
+    }
 })
 
 /** Runs [block] once [count] status clients are connected and the channel listens to the kernel's events. */
