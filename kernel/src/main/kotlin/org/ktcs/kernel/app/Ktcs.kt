@@ -11,6 +11,7 @@ import org.ktcs.kernel.extension.Extensions
 import org.ktcs.kernel.extension.InstalledExtensions
 import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.persistence.ModelFileException
+import org.ktcs.kernel.persistence.PublishedModelFile
 import org.ktcs.kernel.simulation.Fleet
 import org.ktcs.kernel.simulation.SimulationRunner
 import org.ktcs.kernel.web.KernelVersion
@@ -51,8 +52,9 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
         val waitForShutdown = awaitShutdown ?: signal!!::await
         // Reading the model is most of the start-up's own work (Jackson's Kotlin module reflects on every element
         // class); it runs while the configuration, logging and extensions are set up.
-        val loading = CompletableFuture.supplyAsync { PlantModelLoader.load(options.model) }
         val config = config(options)
+        val published = PublishedModelFile(Path.of(config[KtcsSettings.dataDirectory]))
+        val loading = CompletableFuture.supplyAsync { PlantModelLoader.loadAtStart(options.model, published) }
         Logging.apply(config)
         val installed = extensions(config)
         val model = try {

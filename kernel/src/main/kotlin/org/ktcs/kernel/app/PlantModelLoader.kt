@@ -6,6 +6,7 @@ import org.ktcs.kernel.model.ModelProblem
 import org.ktcs.kernel.model.PlantModelValidator
 import org.ktcs.kernel.persistence.ModelRead
 import org.ktcs.kernel.persistence.PlantModelFiles
+import org.ktcs.kernel.persistence.PublishedModelFile
 import java.nio.file.Path
 
 /** A model that passed validation, with the warnings it still has. */
@@ -20,6 +21,21 @@ object PlantModelLoader {
         loadDemo()
     } else {
         validated(PlantModelFiles.readWithWarnings(file), file.toString())
+    }
+
+    /**
+     * The model a kTCS start runs: [file] when given (`--model`), else the model last published to [published]
+     * (`PUT /v1/plantModel` or the overview's modelling mode), else the demo plant.
+     */
+    fun loadAtStart(file: Path?, published: PublishedModelFile): LoadedModel = when {
+        file != null -> load(file)
+
+        published.exists() -> validated(
+            PlantModelFiles.readWithWarnings(published.file),
+            "published model ${published.file}",
+        )
+
+        else -> loadDemo()
     }
 
     fun loadDemo(): LoadedModel {
