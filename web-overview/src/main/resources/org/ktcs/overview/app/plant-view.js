@@ -202,6 +202,11 @@ export class PlantView {
     const ctx = this.overlay.getContext('2d');
     ctx.clearRect(0, 0, this.width, this.height);
     if (!this.geometry) return false;
+    // The modelling mode draws the model being edited, without the live vehicles.
+    if (this.tool) {
+      this.tool.drawOverlay(ctx);
+      return false;
+    }
     this.drawHighlightedRoute(ctx);
     const moving = this.vehicles.draw(ctx, now);
     this.drawSelection(ctx);

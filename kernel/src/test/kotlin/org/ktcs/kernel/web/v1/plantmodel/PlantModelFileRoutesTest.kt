@@ -12,6 +12,7 @@ import kotlinx.serialization.json.jsonArray
 import kotlinx.serialization.json.jsonObject
 import kotlinx.serialization.json.jsonPrimitive
 import org.ktcs.kernel.app.PlantModelLoader
+import org.ktcs.kernel.reliability.send
 import org.ktcs.kernel.reliability.startKernel
 import org.ktcs.kernel.web.WebApiClient
 
@@ -81,5 +82,13 @@ class PlantModelFileRoutesTest : FunSpec({
         problem["element"]!!.jsonPrimitive.content shouldBe "path 'Nowhere'"
         problem["name"]!!.jsonPrimitive.content shouldBe "Nowhere"
         problem["message"]!!.jsonPrimitive.content shouldContain "Point-9999"
+    }
+
+    test("a file sent as application/xml, as the overview sends it, is read; a text/plain body is refused") {
+        val http = java.net.http.HttpClient.newHttpClient()
+        val headers = mapOf("Content-Type" to "application/xml", "X-Requested-With" to "test")
+        send(http, "POST", "$base/plantModel/fromFile", demoFile, headers = headers).statusCode() shouldBe 200
+        send(http, "POST", "$base/plantModel/fromFile", demoFile, headers = mapOf("Content-Type" to "text/plain"))
+            .statusCode() shouldBe 415
     }
 })

@@ -1,0 +1,184 @@
+package org.ktcs.overview
+
+import com.microsoft.playwright.Page
+import com.microsoft.playwright.assertions.LocatorAssertions
+import com.microsoft.playwright.assertions.PlaywrightAssertions.assertThat
+import com.microsoft.playwright.options.FilePayload
+import io.kotest.assertions.nondeterministic.eventually
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.collections.shouldContainExactly
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldContain
+import kotlinx.serialization.json.Json
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.jsonArray
+import kotlinx.serialization.json.jsonObject
+import kotlinx.serialization.json.jsonPrimitive
+import org.ktcs.kernel.app.PlantModelLoader
+import java.nio.file.Files
+import kotlin.time.Duration.Companion.seconds
+
+/**
+ * The overview's modelling mode in headless Chromium against the real application: a plant drawn from nothing by
+ * mouse and keyboard runs an order, edits undo and redo, an invalid model is refused with its error on the element,
+ * the published model survives a restart, and a file opened and saved is byte for byte the same. The tests share
+ * one page and run in order.
+ */
+class ModellingBrowserTest : FunSpec({
+    val dataDirectory = Files.createTempDirectory("ktcs-modelling-test")
+    var ktcs: RunningKtcs? = null
+    var session: Chromium.Session? = null
+    lateinit var watched: Chromium.WatchedPage
+    val page: () -> Page = { watched.page }
+    val settings = listOf("dispatcher.parkIdleVehicles=false")
+
+    fun openOverview() {
+        ktcs = RunningKtcs(settings, dataDirectory = dataDirectory)
+        page().navigate(ktcs!!.baseUrl + "/")
+        page().waitForFunction("() => window.ktcsOverview && window.ktcsOverview.connected()")
+    }
+
+    fun browserTest(name: String, body: suspend () -> Unit) = test(name) {
+        Chromium.assumeAvailable()
+        if (session == null) {
+            session = Chromium.start()
+            watched = session!!.newPage(1440, 860)
+            page().onDialog { it.accept() }
+            openOverview()
+        }
+        body()
+        watched.errors.shouldBeEmpty()
+    }
+    afterSpec {
+        session?.close()
+        ktcs?.close()
+        dataDirectory.toFile().deleteRecursively()
+    }
+
+    fun kernelModel(): JsonObject = Json.parseToJsonElement(ktcs!!.get("/v1/plantModel").body()).jsonObject
+    fun draft(
+        expression: String,
+    ): Any? = page().evaluate("() => { const m = window.ktcsOverview.modelling.mode; return $expression; }")
+
+    /** Clicks the plant canvas at (x, y) from its top left corner. */
+    fun clickPlant(x: Int, y: Int) {
+        val box = page().locator(".plant-overlay").boundingBox()
+        page().mouse().click(box.x + x, box.y + y)
+    }
+
+    /** Clicks element [name] of [kind] where the plant view draws it. */
+    fun clickElement(kind: String, name: String) {
+        val at = page().evaluate(
+            "([k, n]) => window.ktcsOverview.pagePositionOf(k, n)",
+            listOf(kind, name),
+        ) as Map<*, *>
+        page().mouse().click((at["x"] as Number).toDouble(), (at["y"] as Number).toDouble())
+    }
+
+    val corners = listOf(150 to 150, 450 to 150, 450 to 450, 150 to 450)
+
+    browserTest("a plant drawn from an empty model by mouse and keyboard is published and runs an order to FINISHED") {
+        page().locator("#mode-modelling").click()
+        page().locator("[data-action=new]").click()
+        draft("m.draft.model.points.length") shouldBe 0
+        page().keyboard().press("p")
+        corners.forEach { (x, y) -> clickPlant(x, y) }
+        page().keyboard().press("a")
+        corners.indices.forEach { i ->
+            clickPlant(corners[i].first, corners[i].second)
+            clickPlant(corners[(i + 1) % 4].first, corners[(i + 1) % 4].second)
+        }
+        page().keyboard().press("l")
+        clickPlant(600, 450)
+        page().keyboard().press("a")
+        clickPlant(600, 450)
+        clickPlant(450, 450) // the link to Point-0003
+        page().keyboard().press("Escape")
+        page().locator("[data-add=vehicle]").click()
+        // The loopback vehicle starts at Point-0001 (its property loopback:initialPosition).
+        page().locator("[name=new-property-key]").fill("loopback:initialPosition")
+        page().locator("[name=new-property-value]").fill("Point-0001")
+        page().locator(".add-property button").click()
+        draft("m.draft.model.points.length") shouldBe 4
+        draft("m.draft.model.paths.length") shouldBe 4
+        draft("m.draft.model.locations[0].links[0].pointName") shouldBe "Point-0003"
+        watched.screenshot("modelling-drawn")
+
+        page().locator("[data-action=publish]").click()
+
+        eventually(10.seconds) { kernelModel()["name"]!!.jsonPrimitive.content shouldBe "Unnamed model" }
+        kernelModel()["vehicles"]!!.jsonArray.map { it.jsonObject["name"]!!.jsonPrimitive.content } shouldContainExactly
+            listOf("Vehicle-0001")
+        page().locator("#mode-operating").click()
+        page().locator("[data-tab=orders]").click()
+        page().locator("[data-action=new-order]").click()
+        val dialog = page().locator("#order-dialog")
+        dialog.locator("[name=destination]").selectOption("location:Location-0001")
+        dialog.locator("[name=operation]").selectOption("NOP")
+        dialog.locator("[name=name]").fill("Drawn-Plant-Order")
+        dialog.locator("[data-action=create-order]").click()
+        val state = page().locator("[data-order='Drawn-Plant-Order'] [data-column=state]")
+        assertThat(state).hasText("FINISHED", LocatorAssertions.HasTextOptions().setTimeout(60_000.0))
+    }
+
+    browserTest("every edit undoes and redoes: a move by arrow key, a deletion with the paths at the point") {
+        page().locator("#mode-modelling").click()
+        page().keyboard().press("s")
+        clickElement("point", "Point-0001")
+        draft("[...m.selection]") shouldBe listOf("point:Point-0001")
+        val x = (draft("m.draft.model.points[0].position.x") as Number).toInt()
+
+        page().keyboard().press("ArrowRight")
+        (draft("m.draft.model.points[0].position.x") as Number).toInt() shouldBe x + 500
+        page().keyboard().press("Control+z")
+        (draft("m.draft.model.points[0].position.x") as Number).toInt() shouldBe x
+        page().keyboard().press("Control+y")
+        (draft("m.draft.model.points[0].position.x") as Number).toInt() shouldBe x + 500
+        page().keyboard().press("Delete")
+        draft("m.draft.model.paths.length") shouldBe 2
+        page().locator("[data-action=undo]").click()
+        draft("m.draft.model.paths.length") shouldBe 4
+        page().locator("[data-action=undo]").click()
+        (draft("m.draft.model.points[0].position.x") as Number).toInt() shouldBe x
+    }
+
+    browserTest("a model with an error is refused with the error shown on the element; the kernel keeps its model") {
+        clickElement("location", "Location-0001")
+        draft("[...m.selection]") shouldBe listOf("location:Location-0001")
+        page().locator("[name='link-Point-0003']").fill("FLY")
+        page().locator("[name='link-Point-0003']").press("Enter")
+        page().locator(".plant-overlay").focus()
+        page().waitForFunction(
+            "() => window.ktcsOverview.modelling.mode.overlay.marked.get('Location-0001') === 'ERROR'",
+        )
+        assertThat(page().locator(".problems")).containsText("FLY")
+        watched.screenshot("modelling-error")
+
+        page().locator("[data-action=publish]").click()
+
+        assertThat(page().locator(".toast.error").last()).containsText("Not published")
+        kernelModel()["locations"]!!.jsonArray.first().jsonObject["links"]!!.jsonArray.first()
+            .jsonObject["allowedOperations"]!!.jsonArray.size shouldBe 0
+        page().keyboard().press("Control+z")
+        page().waitForFunction("() => window.ktcsOverview.modelling.mode.overlay.marked.size === 0")
+    }
+
+    browserTest("the demo plant's file opened and saved again is byte for byte the same") {
+        val demo = PlantModelLoader::class.java.getResourceAsStream(PlantModelLoader.DEMO_RESOURCE)!!.readAllBytes()
+        page().locator("[name=model-file]").setInputFiles(FilePayload("ktcs-demo.xml", "application/xml", demo))
+        page().waitForFunction("() => window.ktcsOverview.modelling.mode.draft.model.name === 'kTCS Demo'")
+
+        val download = page().waitForDownload { page().locator("[data-action=save]").click() }
+
+        Files.readAllBytes(download.path()) shouldBe demo
+    }
+
+    browserTest("a published model survives a restart of kTCS") {
+        ktcs!!.close()
+        openOverview()
+        kernelModel()["name"]!!.jsonPrimitive.content shouldBe "Unnamed model"
+        ktcs!!.get("/v1/plantModel").body() shouldContain "loopback:initialPosition"
+        assertThat(page().locator("#model-name")).hasText("Unnamed model")
+    }
+})
