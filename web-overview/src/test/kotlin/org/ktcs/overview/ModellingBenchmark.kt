@@ -64,6 +64,7 @@ class ModellingBenchmark : FunSpec({
                 const at = plant.view.toScreen(point.x, point.y);
                 const event = { offsetX: at.x, offsetY: at.y, shiftKey: false };
                 select.push(timed(() => { mode.pointerDown(event); mode.pointerUp(event); }));
+                if (!mode.selection.has('point:' + point.name)) throw new Error('the click did not select ' + point.name);
               }
               const first = plant.geometry.points.get(points[5050].name);
               const at = plant.view.toScreen(first.x, first.y);
@@ -73,6 +74,7 @@ class ModellingBenchmark : FunSpec({
               const drag = [];
               for (let i = 1; i <= 20; i += 1) drag.push(timed(() => mode.pointerMove({ offsetX: at.x + i * 6, offsetY: at.y + i * 3, shiftKey: false })));
               const drop = [timed(() => mode.pointerUp({ offsetX: at.x + 120, offsetY: at.y + 60, shiftKey: false }))];
+              if (mode.draft.model.points[5050].position.x === points[5050].position.x) throw new Error('the drag moved nothing');
               return { frame, select, drag_step: drag, drop };
             }
         """.trimIndent()

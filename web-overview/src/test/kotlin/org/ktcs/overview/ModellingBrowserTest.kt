@@ -9,6 +9,7 @@ import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.shouldBe
+import io.kotest.matchers.shouldNotBe
 import io.kotest.matchers.string.shouldContain
 import kotlinx.serialization.json.Json
 import kotlinx.serialization.json.JsonObject
@@ -141,6 +142,34 @@ class ModellingBrowserTest : FunSpec({
         draft("m.draft.model.paths.length") shouldBe 4
         page().locator("[data-action=undo]").click()
         (draft("m.draft.model.points[0].position.x") as Number).toInt() shouldBe x
+    }
+
+    browserTest("a path becomes a Bezier curve whose control point is dragged by its handle; undo straightens it") {
+        val path = "Point-0002 --- Point-0003"
+        clickElement("path", path)
+        page().locator("select[name='layout.connectionType']").selectOption("BEZIER")
+        val controls = "m.draft.model.paths.find((p) => p.name === '$path').layout.controlPoints"
+        draft("$controls.length") shouldBe 2
+        val handle = page().evaluate(
+            "() => { const m = window.ktcsOverview.modelling.mode; const c = m.draft.model.paths.find((p) => p.name === '$path').layout.controlPoints[0];" +
+                " const s = m.plant.view.toScreen(c.x * 50, -c.y * 50); const r = m.plant.canvas.getBoundingClientRect();" +
+                " return [r.left + s.x, r.top + s.y]; }",
+        ) as List<*>
+        val (hx, hy) = handle.map { (it as Number).toDouble() }
+        val before = draft("JSON.stringify($controls[0])")
+
+        page().mouse().move(hx, hy)
+        page().mouse().down()
+        page().mouse().move(hx + 60, hy + 10, com.microsoft.playwright.Mouse.MoveOptions().setSteps(5))
+        page().mouse().up()
+
+        draft("JSON.stringify($controls[0])") shouldNotBe before
+        draft("$controls.length") shouldBe 2
+        page().keyboard().press("Control+z")
+        draft("JSON.stringify($controls[0])") shouldBe before
+        page().keyboard().press("Control+z")
+        draft("$controls.length") shouldBe 0
+        page().keyboard().press("Escape")
     }
 
     browserTest("a model with an error is refused with the error shown on the element; the kernel keeps its model") {

@@ -1,12 +1,13 @@
 // The typed fields of each kind of element in the property panel: how to read a value from the element's JSON, how
 // to write it back, and what makes a value invalid (checked as the user types, before anything changes).
 
+import { withConnectionType } from './control-points.js';
+
 /**
  * @typedef {{key: string, label: string, type: 'text'|'number'|'select'|'checkbox'|'color'|'list',
- *   get: (e: any) => any, set?: (e: any, v: any) => any, options?: (model: any) => string[],
+ *   get: (e: any) => any, set?: (e: any, v: any, model: any) => any, options?: (model: any) => string[],
  *   check?: (v: any, e: any, model: any) => string|null, readOnly?: boolean}} Field
  */
-
 const REPRESENTATIONS = ['NONE', 'DEFAULT', 'LOAD_TRANSFER_GENERIC', 'LOAD_TRANSFER_ALT_1', 'LOAD_TRANSFER_ALT_2',
   'LOAD_TRANSFER_ALT_3', 'LOAD_TRANSFER_ALT_4', 'LOAD_TRANSFER_ALT_5', 'WORKING_GENERIC', 'WORKING_ALT_1',
   'WORKING_ALT_2', 'RECHARGE_GENERIC', 'RECHARGE_ALT_1', 'RECHARGE_ALT_2'];
@@ -68,6 +69,11 @@ function parseCouples(text) {
   return couples.every((c) => c.length === 2 && c.every(Number.isInteger)) ? couples.map(([x, y]) => ({ x, y })) : null;
 }
 
+const connectionType = {
+  key: 'layout.connectionType', label: 'Connection type', type: 'select', options: () => CONNECTION_TYPES,
+  get: (e) => e.layout?.connectionType ?? 'DIRECT', set: (e, v, model) => withConnectionType(model, e, v),
+};
+
 /** @type {Record<string, Field[]>} */
 export const FIELDS = {
   point: [
@@ -80,7 +86,7 @@ export const FIELDS = {
     number('length', 'Length (mm)', atLeast(1)), number('maxVelocity', 'Max. velocity (mm/s, 0: not forward)', atLeast(0)),
     number('maxReverseVelocity', 'Max. reverse velocity (mm/s, 0: not backward)', atLeast(0)),
     { key: 'locked', label: 'Locked', type: 'checkbox', get: (e) => e.locked, set: (e, v) => ({ ...e, locked: v }) },
-    choice('layout.connectionType', 'Connection type', () => CONNECTION_TYPES), controlPoints, layer,
+    connectionType, controlPoints, layer,
   ],
   location: [
     choice('typeName', 'Type', (model) => model.locationTypes.map((t) => t.name)),

@@ -4,6 +4,7 @@
 
 import { elementAt } from '../pointer-input.js';
 import { addLink, addLocation, addPath, addPoint, moveElements } from './model-edits.js';
+import { drawHandles, handleAt, movedControlPoint, selectedPath } from './control-points.js';
 
 const CLICK_SLOP = 4;
 
@@ -38,7 +39,10 @@ export class PointerTool {
     const hit = this.hit(x, y);
     this.gesture = { startX: x, startY: y, x, y, moved: 0, hit, shift: event.shiftKey, kind: 'pan' };
     if (this.editor.tool !== 'select') return;
-    if (hit && (hit.kind === 'point' || hit.kind === 'location')) {
+    const handle = handleAt(this.editor, x, y);
+    if (handle >= 0) {
+      Object.assign(this.gesture, { kind: 'control', path: selectedPath(this.editor).name, handle });
+    } else if (hit && (hit.kind === 'point' || hit.kind === 'location')) {
       const key = `${hit.kind}:${hit.name}`;
       if (!this.editor.selection.has(key) && !event.shiftKey) this.editor.select([key]);
       if (this.editor.selection.has(key)) this.gesture.kind = 'move';
@@ -67,6 +71,8 @@ export class PointerTool {
       this.plant.invalidate();
     } else if (gesture.kind === 'move') {
       this.editor.preview(this.movedModel(gesture));
+    } else if (gesture.kind === 'control') {
+      this.editor.preview(movedControlPoint(this.editor, gesture.path, gesture.handle, x, y));
     } else {
       this.plant.requestFrame();
     }
@@ -85,6 +91,8 @@ export class PointerTool {
     const click = gesture.moved <= CLICK_SLOP;
     if (gesture.kind === 'move' && !click) {
       this.editor.edit(this.movedModel(gesture));
+    } else if (gesture.kind === 'control' && !click) {
+      this.editor.edit(movedControlPoint(this.editor, gesture.path, gesture.handle, gesture.x, gesture.y));
     } else if (gesture.kind === 'box' && !click) {
       this.selectBox(gesture, event.shiftKey);
     } else if (click) {
@@ -157,6 +165,7 @@ export class PointerTool {
 
   /** Draws the box being dragged and the rubber band of a path being drawn. */
   draw(ctx) {
+    drawHandles(ctx, this.editor);
     const gesture = this.gesture;
     ctx.save();
     ctx.strokeStyle = '#ff9800';

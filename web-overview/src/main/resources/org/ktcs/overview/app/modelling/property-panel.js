@@ -53,7 +53,7 @@ export class PropertyPanel {
     return el('form', { className: 'properties', 'data-kind': kind, onsubmit: (event) => event.preventDefault() },
       el('h3', {}, KIND_TITLES[kind]),
       nameField,
-      FIELDS[kind].map((field) => this.field(field, element, (value) => change((e) => field.set(e, value)))),
+      FIELDS[kind].map((field) => this.field(field, element, (value) => change((e) => field.set(e, value, this.model)))),
       kind === 'path' ? el('button', { type: 'button', onclick: () => this.editor.actions.recomputeLengths() }, 'Recompute length') : null,
       kind === 'location' ? this.linksView(element, change) : null,
       this.propertiesView(element, change));
