@@ -10,6 +10,7 @@ import { ModellingToolbar } from './toolbar.js';
 import { PropertyPanel } from './property-panel.js';
 import { installModellingKeys } from './keys.js';
 import { ModelActions } from './model-actions.js';
+import { LISTS } from './model-edits.js';
 
 const VALIDATE_DELAY_MS = 300;
 
@@ -142,8 +143,7 @@ export class ModellingMode {
 
   existingKeys(model) {
     const keys = new Set();
-    for (const [kind, list] of Object.entries({ point: 'points', path: 'paths', location: 'locations',
-      locationType: 'locationTypes', block: 'blocks', vehicle: 'vehicles' })) {
+    for (const [kind, list] of Object.entries(LISTS)) {
       for (const element of model[list]) keys.add(`${kind}:${element.name}`);
     }
     return keys;

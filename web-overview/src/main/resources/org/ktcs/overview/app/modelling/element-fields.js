@@ -2,6 +2,7 @@
 // to write it back, and what makes a value invalid (checked as the user types, before anything changes).
 
 import { withConnectionType } from './control-points.js';
+import { LISTS } from './model-edits.js';
 
 /**
  * @typedef {{key: string, label: string, type: 'text'|'number'|'select'|'checkbox'|'color'|'list',
@@ -118,7 +119,6 @@ export const FIELDS = {
 export function nameProblem(name, current, model) {
   if (name.trim() === '') return 'must not be empty';
   if (name === current) return null;
-  const taken = ['points', 'paths', 'locations', 'locationTypes', 'blocks', 'vehicles']
-    .some((list) => model[list].some((e) => e.name === name));
+  const taken = Object.values(LISTS).some((list) => model[list].some((e) => e.name === name));
   return taken ? `another element is named "${name}"` : null;
 }

@@ -1,6 +1,7 @@
 // Parts of the modelling side bar about the whole model: its layers and layer groups, and the validator's problems.
 
 import { el } from '../dom.js';
+import { LISTS } from './model-edits.js';
 
 /** The layers (the active one gets new elements) and layer groups, with visibility, name and group. */
 export function layersSection(editor) {
@@ -49,7 +50,7 @@ export function problemsSection(editor, key = null) {
 function selectNamed(editor, name) {
   if (!name) return;
   const model = editor.draft.model;
-  for (const [kind, list] of Object.entries({ point: 'points', path: 'paths', location: 'locations', locationType: 'locationTypes', block: 'blocks', vehicle: 'vehicles' })) {
+  for (const [kind, list] of Object.entries(LISTS)) {
     if (model[list].some((e) => e.name === name)) return editor.select([`${kind}:${name}`]);
   }
 }
