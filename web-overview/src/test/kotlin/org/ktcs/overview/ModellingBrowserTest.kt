@@ -193,6 +193,23 @@ class ModellingBrowserTest : FunSpec({
         page().waitForFunction("() => window.ktcsOverview.modelling.mode.overlay.marked.size === 0")
     }
 
+    browserTest("unpublished edits survive a reload of the page") {
+        page().keyboard().press("p")
+        clickPlant(300, 300)
+        page().keyboard().press("s")
+        draft("m.draft.model.points.length") shouldBe 5
+        page().waitForFunction("() => JSON.parse(localStorage.getItem('ktcs.modelling.draft'))?.model.points.length === 5")
+
+        page().reload()
+        page().waitForFunction("() => window.ktcsOverview && window.ktcsOverview.connected()")
+        page().locator("#mode-modelling").click()
+        page().waitForFunction("() => window.ktcsOverview.modelling.mode?.active")
+
+        draft("m.draft.model.points.length") shouldBe 5
+        draft("m.draft.edited") shouldBe true
+        assertThat(page().locator(".draft-state")).containsText("unpublished edits")
+    }
+
     browserTest("the demo plant's file opened and saved again is byte for byte the same") {
         val demo = PlantModelLoader::class.java.getResourceAsStream(PlantModelLoader.DEMO_RESOURCE)!!.readAllBytes()
         page().locator("[name=model-file]").setInputFiles(FilePayload("ktcs-demo.xml", "application/xml", demo))

@@ -9,8 +9,10 @@ import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.StandardCopyOption.ATOMIC_MOVE
 import java.nio.file.StandardCopyOption.REPLACE_EXISTING
+import java.nio.file.StandardOpenOption.CREATE_NEW
 import java.nio.file.StandardOpenOption.READ
 import java.nio.file.StandardOpenOption.WRITE
+import java.util.UUID
 
 /**
  * The plant model kTCS publishes to and starts from: `plant-model.xml` in the data directory (setting
@@ -38,7 +40,7 @@ class PublishedModelFile(val directory: Path) {
         var temporary: Path? = null
         try {
             Files.createDirectories(directory)
-            temporary = Files.createTempFile(directory, "$FILE_NAME.", ".tmp").also { writeDurably(it, content) }
+            temporary = temporaryFile(FILE_NAME).also { writeDurably(it, content) }
             if (exists()) keepBackup()
             moveAtomically(temporary, file)
             syncDirectory()
@@ -54,18 +56,21 @@ class PublishedModelFile(val directory: Path) {
 
     /** A copy that is complete before it takes the backup's name: the backup is never half-written either. */
     private fun keepBackup() {
-        val copy = Files.createTempFile(directory, "$FILE_NAME.bak.", ".tmp")
+        val copy = temporaryFile("$FILE_NAME.bak")
         try {
-            Files.copy(file, copy, REPLACE_EXISTING)
-            FileChannel.open(copy, WRITE).use { it.force(true) }
+            writeDurably(copy, Files.readAllBytes(file))
             moveAtomically(copy, backup)
         } finally {
             Files.deleteIfExists(copy)
         }
     }
 
+    // Not Files.createTempFile: its files are private to the user (0600), and the published model should be as
+    // readable as any file kTCS writes (the umask decides).
+    private fun temporaryFile(prefix: String): Path = directory.resolve("$prefix.${UUID.randomUUID()}.tmp")
+
     private fun writeDurably(path: Path, content: ByteArray) {
-        FileChannel.open(path, WRITE).use { channel ->
+        FileChannel.open(path, CREATE_NEW, WRITE).use { channel ->
             val buffer = ByteBuffer.wrap(content)
             while (buffer.hasRemaining()) channel.write(buffer)
             channel.force(true)

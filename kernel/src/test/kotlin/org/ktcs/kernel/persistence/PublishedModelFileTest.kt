@@ -45,4 +45,14 @@ class PublishedModelFileTest : FunSpec({
         PlantModelFiles.read(published.file).name shouldBe "Second"
         PlantModelFiles.read(published.backup).name shouldBe "First"
     }
+
+    test("the published file gets the permissions of any file created there, not a temporary file's private ones") {
+        val directory = tempdir().toPath()
+        val published = PublishedModelFile(directory)
+        published.save(demo)
+        published.save(demo)
+        val probe = Files.createFile(directory.resolve("probe"))
+        Files.getPosixFilePermissions(published.file) shouldBe Files.getPosixFilePermissions(probe)
+        Files.getPosixFilePermissions(published.backup) shouldBe Files.getPosixFilePermissions(probe)
+    }
 })
