@@ -150,10 +150,11 @@ class ModellingBrowserTest : FunSpec({
         page().locator("select[name='layout.connectionType']").selectOption("BEZIER")
         val controls = "m.draft.model.paths.find((p) => p.name === '$path').layout.controlPoints"
         draft("$controls.length") shouldBe 2
+        // The first control point's handle, in page coordinates (layout units of 50 mm, y pointing down).
         val handle = page().evaluate(
-            "() => { const m = window.ktcsOverview.modelling.mode; const c = m.draft.model.paths.find((p) => p.name === '$path').layout.controlPoints[0];" +
-                " const s = m.plant.view.toScreen(c.x * 50, -c.y * 50); const r = m.plant.canvas.getBoundingClientRect();" +
-                " return [r.left + s.x, r.top + s.y]; }",
+            "() => { const m = window.ktcsOverview.modelling.mode; const c = $controls[0];" +
+                " const s = m.plant.view.toScreen(c.x * 50, -c.y * 50);" +
+                " const r = m.plant.canvas.getBoundingClientRect(); return [r.left + s.x, r.top + s.y]; }",
         ) as List<*>
         val (hx, hy) = handle.map { (it as Number).toDouble() }
         val before = draft("JSON.stringify($controls[0])")
@@ -198,7 +199,9 @@ class ModellingBrowserTest : FunSpec({
         clickPlant(300, 300)
         page().keyboard().press("s")
         draft("m.draft.model.points.length") shouldBe 5
-        page().waitForFunction("() => JSON.parse(localStorage.getItem('ktcs.modelling.draft'))?.model.points.length === 5")
+        page().waitForFunction(
+            "() => JSON.parse(localStorage.getItem('ktcs.modelling.draft'))?.model.points.length === 5",
+        )
 
         page().reload()
         page().waitForFunction("() => window.ktcsOverview && window.ktcsOverview.connected()")
