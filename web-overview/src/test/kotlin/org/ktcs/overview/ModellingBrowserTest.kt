@@ -142,6 +142,19 @@ class ModellingBrowserTest : FunSpec({
         draft("m.draft.model.paths.length") shouldBe 4
         page().locator("[data-action=undo]").click()
         (draft("m.draft.model.points[0].position.x") as Number).toInt() shouldBe x
+
+        // Dragged by the mouse: moved on the grid, once the button is released (one edit, one undo).
+        val at = page().evaluate("() => window.ktcsOverview.pagePositionOf('point', 'Point-0001')") as Map<*, *>
+        val (px, py) = listOf(at["x"], at["y"]).map { (it as Number).toDouble() }
+        page().mouse().move(px, py)
+        page().mouse().down()
+        page().mouse().move(px + 80, py, com.microsoft.playwright.Mouse.MoveOptions().setSteps(4))
+        page().mouse().up()
+        val dragged = (draft("m.draft.model.points[0].position.x") as Number).toInt()
+        (dragged > x) shouldBe true
+        (dragged - x) % 500 shouldBe 0
+        page().keyboard().press("Control+z")
+        (draft("m.draft.model.points[0].position.x") as Number).toInt() shouldBe x
     }
 
     browserTest("a path becomes a Bezier curve whose control point is dragged by its handle; undo straightens it") {

@@ -70,12 +70,31 @@ export class PointerTool {
       this.plant.view.pan(dx, dy);
       this.plant.invalidate();
     } else if (gesture.kind === 'move') {
-      this.editor.preview(this.movedModel(gesture));
+      this.previewMove(gesture);
     } else if (gesture.kind === 'control') {
       this.editor.preview(movedControlPoint(this.editor, gesture.path, gesture.handle, x, y));
     } else {
       this.plant.requestFrame();
     }
+  }
+
+  /**
+   * Shows the selection moved without rebuilding the drawing of a large plant on every step: the drawn points and
+   * locations move (straight paths and links follow, as they share the points); the drop rebuilds it.
+   */
+  previewMove(gesture) {
+    const plant = this.plant;
+    gesture.originals ??= [...this.editor.selection].map((key) => {
+      const kind = key.slice(0, key.indexOf(':'));
+      return kind === 'point' || kind === 'location' ? plant.elementNamed(kind, key.slice(kind.length + 1)) : null;
+    }).filter(Boolean).map((element) => ({ element, x: element.x, y: element.y }));
+    const from = this.snapped(gesture.startX, gesture.startY);
+    const to = this.snapped(gesture.x, gesture.y);
+    for (const { element, x, y } of gesture.originals) {
+      element.x = x + to.x - from.x;
+      element.y = y + to.y - from.y;
+    }
+    plant.invalidate();
   }
 
   movedModel(gesture) {
@@ -102,6 +121,7 @@ export class PointerTool {
   }
 
   cancel() {
+    for (const { element, x, y } of this.gesture?.originals ?? []) Object.assign(element, { x, y });
     this.gesture = null;
     this.pathStart = null;
     this.editor.preview(null);
