@@ -207,6 +207,37 @@ class ModellingBrowserTest : FunSpec({
         page().waitForFunction("() => window.ktcsOverview.modelling.mode.overlay.marked.size === 0")
     }
 
+    browserTest("a shift-dragged box selects the square; copied and pasted, it comes with its paths; undo removes it") {
+        fun pagePosition(
+            name: String,
+        ) = (page().evaluate("() => window.ktcsOverview.pagePositionOf('point', '$name')") as Map<*, *>)
+            .let { (it["x"] as Number).toDouble() to (it["y"] as Number).toDouble() }
+        val (x1, y1) = pagePosition("Point-0001")
+        val (x3, y3) = pagePosition("Point-0003")
+        page().keyboard().press("s")
+        page().keyboard().down("Shift")
+        page().mouse().move(minOf(x1, x3) - 10, minOf(y1, y3) - 10)
+        page().mouse().down()
+        page().mouse().move(
+            maxOf(x1, x3) + 10,
+            maxOf(y1, y3) + 10,
+            com.microsoft.playwright.Mouse.MoveOptions().setSteps(4),
+        )
+        page().mouse().up()
+        page().keyboard().up("Shift")
+        draft("m.selection.size") shouldBe 8 // 4 points, 4 paths
+
+        page().keyboard().press("Control+c")
+        page().keyboard().press("Control+v")
+
+        draft("m.draft.model.points.length") shouldBe 8
+        draft("m.draft.model.paths.length") shouldBe 8
+        draft("[...m.selection].filter((k) => k.startsWith('point:')).sort()") shouldBe
+            listOf("point:Point-0005", "point:Point-0006", "point:Point-0007", "point:Point-0008")
+        page().keyboard().press("Control+z")
+        draft("m.draft.model.points.length") shouldBe 4
+    }
+
     browserTest("unpublished edits survive a reload of the page") {
         page().keyboard().press("p")
         clickPlant(300, 300)
