@@ -68,13 +68,19 @@ class ModellingBrowserTest : FunSpec({
         page().mouse().click(box.x + x, box.y + y)
     }
 
-    /** Clicks element [name] of [kind] where the plant view draws it. */
-    fun clickElement(kind: String, name: String) {
+    /** Where the plant view draws element [name] of [kind], in page coordinates. */
+    fun pagePosition(kind: String, name: String): Pair<Double, Double> {
         val at = page().evaluate(
             "([k, n]) => window.ktcsOverview.pagePositionOf(k, n)",
             listOf(kind, name),
         ) as Map<*, *>
-        page().mouse().click((at["x"] as Number).toDouble(), (at["y"] as Number).toDouble())
+        return (at["x"] as Number).toDouble() to (at["y"] as Number).toDouble()
+    }
+
+    /** Clicks element [name] of [kind] where the plant view draws it. */
+    fun clickElement(kind: String, name: String) {
+        val (x, y) = pagePosition(kind, name)
+        page().mouse().click(x, y)
     }
 
     val corners = listOf(150 to 150, 450 to 150, 450 to 450, 150 to 450)
@@ -144,8 +150,7 @@ class ModellingBrowserTest : FunSpec({
         (draft("m.draft.model.points[0].position.x") as Number).toInt() shouldBe x
 
         // Dragged by the mouse: moved on the grid, once the button is released (one edit, one undo).
-        val at = page().evaluate("() => window.ktcsOverview.pagePositionOf('point', 'Point-0001')") as Map<*, *>
-        val (px, py) = listOf(at["x"], at["y"]).map { (it as Number).toDouble() }
+        val (px, py) = pagePosition("point", "Point-0001")
         page().mouse().move(px, py)
         page().mouse().down()
         page().mouse().move(px + 80, py, com.microsoft.playwright.Mouse.MoveOptions().setSteps(4))
@@ -208,12 +213,8 @@ class ModellingBrowserTest : FunSpec({
     }
 
     browserTest("a shift-dragged box selects the square; copied and pasted, it comes with its paths; undo removes it") {
-        fun pagePosition(
-            name: String,
-        ) = (page().evaluate("() => window.ktcsOverview.pagePositionOf('point', '$name')") as Map<*, *>)
-            .let { (it["x"] as Number).toDouble() to (it["y"] as Number).toDouble() }
-        val (x1, y1) = pagePosition("Point-0001")
-        val (x3, y3) = pagePosition("Point-0003")
+        val (x1, y1) = pagePosition("point", "Point-0001")
+        val (x3, y3) = pagePosition("point", "Point-0003")
         page().keyboard().press("s")
         page().keyboard().down("Shift")
         page().mouse().move(minOf(x1, x3) - 10, minOf(y1, y3) - 10)
