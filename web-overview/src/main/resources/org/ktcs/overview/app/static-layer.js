@@ -176,8 +176,10 @@ export class StaticLayer {
         if (labels.tryPlace(textBox(ctx, location.name, p.x, top, 13))) ctx.fillText(location.name, p.x, top);
       }
     }
-    // Point names only once they no longer crowd each other.
-    if (inView.points.length <= MAX_LABELS && this.plant.view.scale * 1500 > 40) {
+    // Point names only once they no longer crowd each other; while modelling a small plant, always (names are what
+    // the user refers to; one that would cover another is still left out).
+    const modellingSmall = Boolean(this.plant.tool) && inView.points.length <= 60;
+    if (inView.points.length <= MAX_LABELS && (this.plant.view.scale * 1500 > 40 || modellingSmall)) {
       ctx.fillStyle = '#5f6b78';
       ctx.font = '10px system-ui, sans-serif';
       for (const point of inView.points) {
