@@ -4,6 +4,7 @@ import org.ktcs.api.model.PlantModel
 import org.ktcs.kernel.model.InvalidModelException
 import org.ktcs.kernel.model.ModelProblem
 import org.ktcs.kernel.model.PlantModelValidator
+import org.ktcs.kernel.persistence.ModelFileException
 import org.ktcs.kernel.persistence.ModelRead
 import org.ktcs.kernel.persistence.PlantModelFiles
 import org.ktcs.kernel.persistence.PublishedModelFile
@@ -30,10 +31,15 @@ object PlantModelLoader {
     fun loadAtStart(file: Path?, published: PublishedModelFile): LoadedModel = when {
         file != null -> load(file)
 
-        published.exists() -> validated(
-            PlantModelFiles.readWithWarnings(published.file),
-            "published model ${published.file}",
-        )
+        published.exists() -> try {
+            validated(PlantModelFiles.readWithWarnings(published.file), "published model ${published.file}")
+        } catch (error: ModelFileException) {
+            throw ModelFileException(
+                "${error.message} (the published model; the one published before it is ${published.backup}; " +
+                    "start with --model FILE, or move the file away to start with the demo plant)",
+                error,
+            )
+        }
 
         else -> loadDemo()
     }

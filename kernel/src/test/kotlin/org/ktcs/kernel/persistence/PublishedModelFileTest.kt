@@ -55,4 +55,16 @@ class PublishedModelFileTest : FunSpec({
         Files.getPosixFilePermissions(published.file) shouldBe Files.getPosixFilePermissions(probe)
         Files.getPosixFilePermissions(published.backup) shouldBe Files.getPosixFilePermissions(probe)
     }
+
+    test("a published file that cannot be read stops the start with the reader's reason and the way out") {
+        val published = PublishedModelFile(tempdir().toPath())
+        published.save(demo)
+        Files.writeString(published.file, "<model")
+
+        val error = shouldThrow<ModelFileException> { PlantModelLoader.loadAtStart(null, published) }
+
+        error.message shouldContain published.file.toString()
+        error.message shouldContain published.backup.toString()
+        error.message shouldContain "--model FILE"
+    }
 })
