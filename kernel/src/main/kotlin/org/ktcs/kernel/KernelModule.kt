@@ -22,10 +22,12 @@ import org.ktcs.kernel.core.WatchdogOptions
 import org.ktcs.kernel.dispatching.DefaultDispatcher
 import org.ktcs.kernel.dispatching.DefaultRecoveryEvaluator
 import org.ktcs.kernel.dispatching.DispatcherConfiguration
+import org.ktcs.kernel.persistence.PublishedModelFile
 import org.ktcs.kernel.routing.DefaultRouter
 import org.ktcs.kernel.routing.RouterConfiguration
 import org.ktcs.kernel.scheduling.DefaultScheduler
 import org.ktcs.kernel.services.StandardKernelServices
+import java.nio.file.Path
 import java.util.ServiceLoader
 
 /**
@@ -64,7 +66,8 @@ fun kernelModule(config: KtcsConfig, model: PlantModel, context: KernelContext):
             options = kernelOptions(config),
         )
     }
-    single<KernelServices> { StandardKernelServices(get()) }
+    single { PublishedModelFile(Path.of(config[KtcsSettings.dataDirectory])) }
+    single<KernelServices> { StandardKernelServices(get(), get()) }
     single<InstalledDriverPanels> {
         InstalledDriverPanels { driver -> get<KernelCore>().controllers.factory(driver)?.panel }
     }

@@ -5,18 +5,28 @@ import org.ktcs.kernel.app.KernelApplication
 import org.ktcs.kernel.app.LoadedModel
 import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.persistence.PublishedModelFile
 import java.net.URI
 import java.net.http.HttpClient
 import java.net.http.HttpRequest
 import java.net.http.HttpResponse
+import java.nio.file.Files
+import java.nio.file.Path
 
-/** The real kernel application with loopback vehicles and the overview, in-process on a free port. */
+/**
+ * The real kernel application with loopback vehicles and the overview, in-process on a free port. It keeps its data
+ * (the published plant model) in [dataDirectory] (a new temporary directory unless given) and, like `./ktcs`,
+ * starts with the model published there, else the demo plant.
+ */
 class RunningKtcs(
     overrides: List<String> = emptyList(),
-    model: LoadedModel = PlantModelLoader.loadDemo(),
+    model: LoadedModel? = null,
+    val dataDirectory: Path = Files.createTempDirectory("ktcs-overview-data").also { it.toFile().deleteOnExit() },
 ) : AutoCloseable {
-    private val config = ConfigLoader().load(null, emptyMap(), BASE_SETTINGS + overrides)
-    private val application = KernelApplication(config, model, listOf(LoopbackExtension(), OverviewExtension()))
+    private val config =
+        ConfigLoader().load(null, emptyMap(), BASE_SETTINGS + "kernel.dataDirectory=$dataDirectory" + overrides)
+    private val model = model ?: PlantModelLoader.loadAtStart(null, PublishedModelFile(dataDirectory))
+    private val application = KernelApplication(config, this.model, listOf(LoopbackExtension(), OverviewExtension()))
     private val http = HttpClient.newHttpClient()
 
     /** E.g. `http://127.0.0.1:41234`. */

@@ -79,7 +79,9 @@ object CommandLine {
         |                                                          (ktcs bench --help lists every option)
         |       ktcs --help | --version
         |
-        |Without --model, kTCS loads its demo plant. Without --config, it reads config/ktcs.conf if that exists.
+        |Without --model, kTCS loads the model last published (PUT /v1/plantModel, the overview's modelling mode),
+        |kept as plant-model.xml in kernel.dataDirectory, else its demo plant. Without --config, it reads
+        |config/ktcs.conf if that exists.
     """.trimMargin()
 
     fun parse(args: List<String>): Command = when (args.firstOrNull()) {

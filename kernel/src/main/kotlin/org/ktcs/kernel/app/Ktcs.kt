@@ -11,6 +11,7 @@ import org.ktcs.kernel.config.SettingsCatalogue
 import org.ktcs.kernel.extension.Extensions
 import org.ktcs.kernel.extension.InstalledExtensions
 import org.ktcs.kernel.persistence.ModelFileException
+import org.ktcs.kernel.persistence.PublishedModelFile
 import org.ktcs.kernel.simulation.Fleet
 import org.ktcs.kernel.simulation.SimulationRunner
 import org.ktcs.kernel.validation.InvalidModelException
@@ -53,8 +54,10 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
         val waitForShutdown = awaitShutdown ?: signal!!::await
         // Reading the model is most of the start-up's own work (Jackson's Kotlin module reflects on every element
         // class); it runs while the configuration, logging and extensions are set up.
-        val loading = CompletableFuture.supplyAsync { PlantModelLoader.load(options.model) }
-        val (config, installed) = configAndExtensions(options)
+        val own = ownConfig(options)
+        val published = PublishedModelFile(Path.of(own[KtcsSettings.dataDirectory]))
+        val loading = CompletableFuture.supplyAsync { PlantModelLoader.loadAtStart(options.model, published) }
+        val (config, installed) = configAndExtensions(options, own)
         Logging.apply(config)
         Logging.toFile(config)
         // The state store opens (and is read) meanwhile too.
@@ -119,9 +122,17 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
      * configuration, whose keys include the extensions' settings: kTCS's own settings are read first (skipping the
      * others) to find the extensions, then all of them.
      */
-    private fun configAndExtensions(options: RunOptions): Pair<KtcsConfig, InstalledExtensions> {
+    /** kTCS's own settings alone (an extension's are not known before the extensions are loaded). */
+    private fun ownConfig(options: RunOptions): KtcsConfig {
         val file = options.configFile ?: DEFAULT_CONFIG.takeIf { Files.isRegularFile(it) }
-        val own = ConfigLoader(KtcsSettings.all).load(file, environment, options.overrides, ignoreUnknown = true)
+        return ConfigLoader(KtcsSettings.all).load(file, environment, options.overrides, ignoreUnknown = true)
+    }
+
+    private fun configAndExtensions(
+        options: RunOptions,
+        own: KtcsConfig = ownConfig(options),
+    ): Pair<KtcsConfig, InstalledExtensions> {
+        val file = options.configFile ?: DEFAULT_CONFIG.takeIf { Files.isRegularFile(it) }
         val setting = KtcsSettings.extensionsDirectory
         val installed = Extensions.load(Path.of(own[setting]), required = own.sourceOf(setting) != "default")
         val config = ConfigLoader(SettingsCatalogue.of(installed.extensions)).load(file, environment, options.overrides)

@@ -2,7 +2,9 @@ package org.ktcs.kernel.app
 
 import org.ktcs.api.model.PlantModel
 import org.ktcs.kernel.persistence.ModelRead
+import org.ktcs.kernel.persistence.ModelFileException
 import org.ktcs.kernel.persistence.PlantModelFiles
+import org.ktcs.kernel.persistence.PublishedModelFile
 import org.ktcs.kernel.validation.InvalidModelException
 import org.ktcs.kernel.validation.ModelProblem
 import org.ktcs.kernel.validation.PlantModelValidator
@@ -20,6 +22,26 @@ object PlantModelLoader {
         loadDemo()
     } else {
         validated(PlantModelFiles.readWithWarnings(file), file.toString())
+    }
+
+    /**
+     * The model a kTCS start runs: [file] when given (`--model`), else the model last published to [published]
+     * (`PUT /v1/plantModel` or the overview's modelling mode), else the demo plant.
+     */
+    fun loadAtStart(file: Path?, published: PublishedModelFile): LoadedModel = when {
+        file != null -> load(file)
+
+        published.exists() -> try {
+            validated(PlantModelFiles.readWithWarnings(published.file), "published model ${published.file}")
+        } catch (error: ModelFileException) {
+            throw ModelFileException(
+                "${error.message} (the published model; the one published before it is ${published.backup}; " +
+                    "start with --model FILE, or move the file away to start with the demo plant)",
+                error,
+            )
+        }
+
+        else -> loadDemo()
     }
 
     fun loadDemo(): LoadedModel {

@@ -39,6 +39,7 @@ import org.ktcs.kernel.vehicles.VehicleControllers
 import org.ktcs.kernel.vehicles.VehicleEnvironment
 import org.ktcs.kernel.workingset.ObjectNames
 import org.ktcs.kernel.workingset.PlantState
+import org.ktcs.kernel.workingset.TopologyChange
 
 /**
  * The kernel's state and the operations on it, wired together: plant, orders, sequences, vehicle controllers and
@@ -225,32 +226,40 @@ class KernelCore(
     fun setPathLocked(path: String, locked: Boolean) {
         plant.setPathLocked(path, locked)
         router.updateTopology(plant.layoutWithLocks())
-        if (locked) {
-            plant.vehicles().filter { vehicle -> vehicle.claimedResources.any { path in it } }.forEach { vehicle ->
-                if (!controllers.controller(vehicle.name).reroute(emptySet())) {
-                    notifications.publish(
-                        vehicle.name,
-                        NotificationLevel.NOTEWORTHY,
-                        "vehicle ${vehicle.name} has no way around locked path $path and keeps its route",
-                    )
-                }
+        if (locked) rerouteAround(path)
+        trigger.request()
+    }
+
+    private fun rerouteAround(path: String) {
+        plant.vehicles().filter { vehicle -> vehicle.claimedResources.any { path in it } }.forEach { vehicle ->
+            if (!controllers.controller(vehicle.name).reroute(emptySet())) {
+                notifications.publish(
+                    vehicle.name,
+                    NotificationLevel.NOTEWORTHY,
+                    "vehicle ${vehicle.name} has no way around locked path $path and keeps its route",
+                )
             }
         }
-        trigger.request()
     }
 
     /**
      * Replaces the plant with [model] when nothing is under way: no transport order that is not final, no order
      * sequence that is not finished, no vehicle moving. Drops final orders and finished sequences, then starts the
-     * new vehicles.
+     * new vehicles. A model that differs only in path locks, path velocities and location locks is applied at
+     * once, also while vehicles drive: vehicles keep running and those whose route uses a newly locked path are
+     * routed around it. [persist] runs once the model is accepted and before it applies; if it throws, the plant
+     * stays as it was.
      */
-    fun replacePlantModel(model: PlantModel) {
-        refuseWhileBusy()
+    fun replacePlantModel(model: PlantModel, persist: (PlantModel) -> Unit = {}) {
+        val topologyChange = TopologyChange.between(plant.model(), model)
+        if (topologyChange == null) refuseWhileBusy()
         try {
             PlantModelValidator.requireValid(model)
         } catch (error: InvalidModelException) {
             throw InvalidRequestException(error.message!!.lines().joinToString(" ") { it.trim() })
         }
+        persist(model)
+        if (topologyChange != null) return applyTopologyChange(topologyChange)
         controllers.discard()
         orders.removeFinal()
         sequences.removeFinished()
@@ -260,6 +269,14 @@ class KernelCore(
         scheduler.updatePlantModel(plant.layoutWithLocks())
         controllers.start(options.enableDriversOnStart, options.initialIntegrationLevel)
         announceTrafficLimits()
+        trigger.request()
+    }
+
+    private fun applyTopologyChange(change: TopologyChange) {
+        val running = plant.model()
+        plant.apply(change)
+        router.updateTopology(plant.layoutWithLocks())
+        change.paths.filter { it.locked && running.path(it.name)?.locked == false }.forEach { rerouteAround(it.name) }
         trigger.request()
     }
 

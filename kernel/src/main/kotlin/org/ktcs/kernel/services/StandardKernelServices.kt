@@ -15,13 +15,20 @@ import org.ktcs.api.service.RouterService
 import org.ktcs.api.service.TransportOrderService
 import org.ktcs.api.service.VehicleService
 import org.ktcs.kernel.core.KernelCore
+import org.ktcs.kernel.persistence.PublishedModelFile
 
-/** The kernel's services, each call carried into the kernel context. */
-class StandardKernelServices(private val kernel: KernelCore) : KernelServices {
+/**
+ * The kernel's services, each call carried into the kernel context. A model that replaces the plant is saved to
+ * [published] first (when given), so the next start runs it.
+ */
+class StandardKernelServices(
+    private val kernel: KernelCore,
+    published: PublishedModelFile? = null,
+) : KernelServices {
     override val transportOrders: TransportOrderService = StandardTransportOrderService(kernel)
     override val dispatcher: DispatcherService = StandardDispatcherService(kernel)
     override val vehicles: VehicleService = StandardVehicleService(kernel)
-    override val plantModel: PlantModelService = StandardPlantModelService(kernel)
+    override val plantModel: PlantModelService = StandardPlantModelService(kernel, published)
 
     override val notifications: NotificationService = object : NotificationService {
         override suspend fun publish(

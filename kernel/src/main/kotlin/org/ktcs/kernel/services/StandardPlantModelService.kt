@@ -4,8 +4,13 @@ import org.ktcs.api.model.PlantModel
 import org.ktcs.api.service.PlantModelService
 import org.ktcs.kernel.core.KernelCore
 import org.ktcs.kernel.store.durably
+import org.ktcs.kernel.persistence.PublishedModelFile
 
-class StandardPlantModelService(private val kernel: KernelCore) : PlantModelService {
+/** The plant-model service; a model that replaces the plant is first saved to [published] (when given). */
+class StandardPlantModelService(
+    private val kernel: KernelCore,
+    private val published: PublishedModelFile? = null,
+) : PlantModelService {
     override suspend fun plantModel(): PlantModel = kernel.context.call { kernel.plant.model() }
 
     override suspend fun setPathLocked(path: String, locked: Boolean) = kernel.durably {
@@ -16,7 +21,8 @@ class StandardPlantModelService(private val kernel: KernelCore) : PlantModelServ
         kernel.durably { kernel.requests.setLocationLocked(location, locked) }
 
     override suspend fun replacePlantModel(model: PlantModel) = kernel.durably {
-        kernel.replacePlantModel(model)
+        // Saved on the kernel's thread: publishing is rare, and no other change may slip in between save and apply.
+        kernel.replacePlantModel(model) { published?.save(it) }
     }
 
     override suspend fun updateRoutingTopology() = kernel.context.call {

@@ -37,6 +37,7 @@ import org.ktcs.kernel.web.v1.events.StatusEventBuffer
 import org.ktcs.kernel.web.v1.events.eventRoutes
 import org.ktcs.kernel.web.v1.orders.orderSequenceRoutes
 import org.ktcs.kernel.web.v1.orders.transportOrderRoutes
+import org.ktcs.kernel.web.v1.plantmodel.plantModelFileRoutes
 import org.ktcs.kernel.web.v1.plantmodel.plantModelRoutes
 import org.ktcs.kernel.web.v1.vehicles.vehicleRoutes
 import org.ktcs.kernel.web.ws.LiveWebSockets
@@ -167,6 +168,7 @@ fun Application.webModule(
             vehicleRoutes(services)
             driverPanelRoutes(services)
             plantModelRoutes(services)
+            plantModelFileRoutes()
             eventRoutes(services, statusEvents)
             webSocketRoutes(services, options.webSocketBufferSize, webSockets)
             dispatcherTrigger(services)

@@ -101,6 +101,22 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
         }
     }
 
+    /** Takes the new versions of paths and locations whose locks or velocities changed; vehicles stay as they are. */
+    fun apply(change: TopologyChange) {
+        for (path in change.paths) {
+            val previous = path(path.name)
+            paths[path.name] = path
+            events.publish(PathEvent(previous, path))
+        }
+        for (location in change.locations) {
+            val previous = location(location.name)
+            locations[location.name] = location
+            events.publish(LocationEvent(previous, location))
+        }
+        base = base.copy(paths = paths.values.toList(), locations = locations.values.toList())
+        lockChanged()
+    }
+
     /** Replaces the whole plant. */
     fun replace(model: PlantModel) {
         load(model)

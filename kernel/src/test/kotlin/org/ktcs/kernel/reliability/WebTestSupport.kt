@@ -19,6 +19,7 @@ import java.net.http.HttpClient
 import java.net.http.HttpRequest
 import java.net.http.HttpResponse
 import java.net.http.WebSocket
+import java.nio.file.Files
 import java.util.concurrent.CompletableFuture
 import java.util.concurrent.CompletionStage
 
@@ -30,7 +31,10 @@ private val stepVehicles = object : KtcsExtension {
 
 /** A kernel with the demo plant and its web API on 127.0.0.1, and the base URL of its `/v1`. */
 fun startKernel(vararg settings: String): Pair<KernelApplication, String> {
-    val config = ConfigLoader().load(null, emptyMap(), listOf("web.bindAddress=127.0.0.1", "web.port=0") + settings)
+    // A published plant model goes to a directory of its own, not the working directory's data/.
+    val data = Files.createTempDirectory("ktcs-data").toFile().apply { deleteOnExit() }
+    val settingsForTest = listOf("web.bindAddress=127.0.0.1", "web.port=0", "kernel.dataDirectory=$data")
+    val config = ConfigLoader().load(null, emptyMap(), settingsForTest + settings)
     val application = KernelApplication(config, PlantModelLoader.loadDemo(), listOf(stepVehicles)) {}
     val base = Regex("web API (http://\\S+/v1)").find(application.start())!!.groupValues[1]
     return application to base

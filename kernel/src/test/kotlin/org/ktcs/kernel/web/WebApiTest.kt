@@ -2,6 +2,7 @@ package org.ktcs.kernel.web
 
 import io.kotest.assertions.nondeterministic.eventually
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.engine.spec.tempdir
 import io.kotest.matchers.collections.shouldContainAll
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
@@ -42,13 +43,14 @@ class WebApiTest : FunSpec({
     val shutdownRequests = AtomicInteger()
 
     fun start(vararg settings: String): Pair<KernelApplication, String> {
-        val config = ConfigLoader().load(null, emptyMap(), listOf("web.bindAddress=127.0.0.1", "web.port=0") + settings)
+        val base = listOf("web.bindAddress=127.0.0.1", "web.port=0", "kernel.dataDirectory=${tempdir()}")
+        val config = ConfigLoader().load(null, emptyMap(), base + settings)
         val application =
             KernelApplication(config, PlantModelLoader.loadDemo(), listOf(testVehicles)) {
                 shutdownRequests.incrementAndGet()
             }
-        val base = Regex("web API (http://\\S+/v1)").find(application.start())!!.groupValues[1]
-        return application to base
+        val url = Regex("web API (http://\\S+/v1)").find(application.start())!!.groupValues[1]
+        return application to url
     }
 
     // Checks every response against kTCS's and openTCS's OpenAPI documents.

@@ -15,6 +15,7 @@ import { mountPanels } from './panels.js';
 import { installLayerToggles, summaryOf } from './layers.js';
 import { throttle } from './throttle.js';
 import { installFleetControls } from './fleet-controls.js';
+import { installModellingMode } from './modelling/mode-switch.js';
 
 const toasts = document.getElementById('toasts');
 const MAX_TOASTS = 5;
@@ -104,6 +105,7 @@ async function start() {
   installPlantControls(plant);
   installFleetControls(document.getElementById('fleet-controls'), { ktcs, client, plant });
   installConnectionIndicator(client);
+  const modelling = installModellingMode({ plant, ktcs, client, details });
 
   let refitAfterReplacement = false;
   client.onModelReplaced((name) => {
@@ -115,7 +117,8 @@ async function start() {
   client.subscribe('plantModel', (message) => {
     if (message.type === 'snapshot') {
       const model = message.objects[0];
-      plant.setModel(model);
+      modelling.runningModel = model;
+      if (!modelling.active) plant.setModel(model);
       if (refitAfterReplacement) {
         refitAfterReplacement = false;
         plant.userMoved = false;
@@ -126,7 +129,7 @@ async function start() {
       document.getElementById('plant-summary').textContent = summaryOf(model);
       installLayerToggles(document.getElementById('layers'), model, plant);
     } else if (message.type === 'event') {
-      plant.updateElement(message.current);
+      if (!modelling.active) plant.updateElement(message.current);
       refreshDetails();
     }
   });
@@ -140,7 +143,7 @@ async function start() {
     refreshDetails();
   });
   client.connect();
-  exposeForDiagnostics(plant, client, themes);
+  exposeForDiagnostics(plant, client, themes, modelling);
 }
 
 function installPlantControls(plant) {
@@ -152,8 +155,10 @@ function installPlantControls(plant) {
 }
 
 // What the browser tests and the drawing benchmark read; also handy in the browser's console.
-function exposeForDiagnostics(plant, client, themes) {
+function exposeForDiagnostics(plant, client, themes, modelling) {
   /** @type {any} */ (window).ktcsOverview = {
+    /** The modelling mode (its draft, selection, problems and the marks drawn on elements). */
+    modelling,
     drawn: () => ({ ...plant.lastDrawn, vehicles: plant.vehicles.drawn.size }),
     /** The resources drawn as held (allocated or claimed), the paths drawn as routes ahead and as highlighted route. */
     drawnResources: () => [...plant.vehicles.drawnResources].sort(),

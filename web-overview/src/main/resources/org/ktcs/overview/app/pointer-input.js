@@ -44,12 +44,23 @@ export function installPointerInput(plant) {
   const target = plant.overlay;
   let drag = null;
   target.addEventListener('pointerdown', (event) => {
+    // In the modelling mode its tool takes every gesture (plant.tool, see modelling/pointer-tool.js).
+    if (plant.tool) {
+      drag = { tool: plant.tool };
+      target.setPointerCapture(event.pointerId);
+      plant.tool.pointerDown(event);
+      return;
+    }
     const vehicle = plant.vehicleDrop?.vehicle;
     const grabbed = vehicle && plant.vehicles.hit(event.offsetX, event.offsetY) === vehicle ? vehicle : null;
     drag = { x: event.offsetX, y: event.offsetY, moved: 0, vehicle: grabbed };
     target.setPointerCapture(event.pointerId);
   });
   target.addEventListener('pointermove', (event) => {
+    if (plant.tool) {
+      plant.tool.pointerMove(event);
+      return;
+    }
     if (!drag) return;
     const dx = event.offsetX - drag.x;
     const dy = event.offsetY - drag.y;
@@ -66,6 +77,11 @@ export function installPointerInput(plant) {
     }
   });
   target.addEventListener('pointerup', (event) => {
+    if (drag?.tool) {
+      drag = null;
+      plant.tool?.pointerUp(event);
+      return;
+    }
     if (drag && drag.moved <= 4) plant.onSelect(elementAt(plant, event.offsetX, event.offsetY));
     else if (drag?.vehicle) dropVehicle(plant, drag.vehicle, pointAt(plant, event.offsetX, event.offsetY));
     drag = null;
@@ -73,6 +89,7 @@ export function installPointerInput(plant) {
   // A cancelled gesture (touch taken over by the browser, window lost focus) ends the drag without a selection.
   const endDrag = () => {
     if (drag?.vehicle) plant.showDropTarget(null);
+    if (drag?.tool) plant.tool?.cancel();
     drag = null;
   };
   target.addEventListener('pointercancel', endDrag);

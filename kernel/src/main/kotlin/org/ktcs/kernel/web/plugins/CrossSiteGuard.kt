@@ -52,7 +52,10 @@ private fun refusal(call: ApplicationCall, origins: BrowserOrigins): Refusal? {
     return contentRefusal(header, type) ?: originRefusal(call, origins, hasBody = type != null)
 }
 
-/** A body must be JSON in a charset the JVM knows. */
+/**
+ * A body must be JSON in a charset the JVM knows, or XML (a plant-model file for `POST /v1/plantModel/fromFile`):
+ * browsers ask before sending either from another page, unlike `text/plain` or a form.
+ */
 private fun contentRefusal(header: String?, type: ContentType?): Refusal? {
     if (header == null) return null
     if (type == null) {
@@ -62,7 +65,7 @@ private fun contentRefusal(header: String?, type: ContentType?): Refusal? {
     if (charset != null && runCatching { Charset.isSupported(charset) }.getOrDefault(false).not()) {
         return HttpStatusCode.UnsupportedMediaType to "unknown charset '$charset'; send UTF-8"
     }
-    if (type.match(ContentType.Application.Json)) return null
+    if (type.match(ContentType.Application.Json) || type.match(ContentType.Application.Xml)) return null
     return HttpStatusCode.UnsupportedMediaType to
         "request bodies must be JSON (Content-Type: application/json), not '${type.withoutParameters()}'"
 }

@@ -21,7 +21,7 @@ import org.ktcs.kernel.web.v1.requiredBooleanQuery
 data class TopologyUpdateRequest(val paths: List<String>? = null)
 
 // The model's own types reject some values (e.g. a negative length) as they are built; those are bad input too.
-private fun PlantModelDto.toCheckedDomain(): PlantModel = try {
+internal fun PlantModelDto.toCheckedDomain(): PlantModel = try {
     toDomain()
 } catch (error: IllegalArgumentException) {
     throw InvalidRequestException("invalid plant model: ${error.message}")

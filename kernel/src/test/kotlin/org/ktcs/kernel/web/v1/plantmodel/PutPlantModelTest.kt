@@ -3,6 +3,7 @@ package org.ktcs.kernel.web.v1.plantmodel
 import io.kotest.assertions.nondeterministic.eventually
 import io.kotest.assertions.withClue
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.engine.spec.tempdir
 import io.kotest.matchers.collections.shouldBeIn
 import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.shouldBe
@@ -23,6 +24,8 @@ import org.ktcs.kernel.app.KernelApplication
 import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.kernel.core.StepDriverFactory
+import org.ktcs.kernel.persistence.PlantModelFiles
+import org.ktcs.kernel.persistence.PublishedModelFile
 import org.ktcs.kernel.web.WebApiClient
 import org.ktcs.kernel.web.WsTestClient
 import java.net.http.HttpClient
@@ -39,12 +42,19 @@ class PutPlantModelTest : FunSpec({
     val http = HttpClient.newHttpClient()
     lateinit var application: KernelApplication
     lateinit var base: String
+    lateinit var data: java.io.File
 
     beforeEach {
+        data = tempdir()
         val config = ConfigLoader().load(
             null,
             emptyMap(),
-            listOf("web.bindAddress=127.0.0.1", "web.port=0", "dispatcher.parkIdleVehicles=false"),
+            listOf(
+                "web.bindAddress=127.0.0.1",
+                "web.port=0",
+                "dispatcher.parkIdleVehicles=false",
+                "kernel.dataDirectory=$data",
+            ),
         )
         application = KernelApplication(config, PlantModelLoader.loadDemo(), listOf(testVehicles))
         base = Regex("web API (http://\\S+/v1)").find(application.start())!!.groupValues[1]
@@ -158,5 +168,65 @@ class PutPlantModelTest : FunSpec({
         snapshot["objects"]!!.jsonArray.map { it.jsonObject.text("name") } shouldContainExactly
             listOf("Vehicle-01", "Vehicle-02", "Vehicle-03")
         socket.close()
+    }
+
+    test("a replaced plant is saved to the data directory, the one before kept as backup; the next start runs it") {
+        val published = PublishedModelFile(data.toPath())
+        published.exists() shouldBe false
+
+        call("PUT", "/plantModel", changedModel().toString()).statusCode() shouldBe 200
+        PlantModelFiles.read(published.file).name shouldBe "Hall 2"
+        call(
+            "PUT",
+            "/plantModel",
+            changedModel().with("name", JsonPrimitive("Hall 3")).toString(),
+        ).statusCode() shouldBe 200
+
+        PlantModelFiles.read(published.file).name shouldBe "Hall 3"
+        PlantModelFiles.read(published.backup).name shouldBe "Hall 2"
+        val restarted = PlantModelLoader.loadAtStart(null, published)
+        restarted.model.name shouldBe "Hall 3"
+        restarted.model.vehicles.size shouldBe 2 // each changed model drops the last vehicle
+        restarted.source shouldContain "published model"
+        // --model still wins over the published model.
+        val demo = data.resolve("demo.xml").toPath()
+        PlantModelFiles.write(PlantModelLoader.loadDemo().model, demo)
+        PlantModelLoader.loadAtStart(demo, published).model.name shouldBe "kTCS Demo"
+    }
+
+    test("an invalid model is not saved: the published file stays as it was") {
+        call("PUT", "/plantModel", changedModel().toString()).statusCode() shouldBe 200
+        val before = java.nio.file.Files.readString(PublishedModelFile(data.toPath()).file)
+        val invalid = changedModel().with("name", JsonPrimitive("Broken")).let {
+            val path = it["paths"]!!.jsonArray.first().jsonObject.with("destPointName", JsonPrimitive("Point-9999"))
+            it.with("paths", JsonArray(listOf(path) + it["paths"]!!.jsonArray.drop(1)))
+        }
+
+        call("PUT", "/plantModel", invalid.toString()).statusCode() shouldBe 400
+
+        java.nio.file.Files.readString(PublishedModelFile(data.toPath()).file) shouldBe before
+    }
+
+    test("locks and velocities change while an order runs: no vehicle restarts, the order stays, the file has them") {
+        call("PUT", "/vehicles/Vehicle-01/paused?newValue=true")
+        val forPausedVehicle = order.replace("{\"destinations", "{\"intendedVehicle\":\"Vehicle-01\",\"destinations")
+        call("POST", "/transportOrders/Busy", forPausedVehicle).statusCode() shouldBe 200
+        val current = model()
+        val paths = current["paths"]!!.jsonArray
+        val first = paths.first().jsonObject.with("locked", JsonPrimitive(true)).with("maxVelocity", JsonPrimitive(321))
+        val changed = current.with("paths", JsonArray(listOf(first) + paths.drop(1)))
+
+        val answer = call("PUT", "/plantModel", changed.toString())
+
+        withClue(answer.body()) { answer.statusCode() shouldBe 200 }
+        val name = first["name"]!!.jsonPrimitive.content
+        val served = model()["paths"]!!.jsonArray.map {
+            it.jsonObject
+        }.first { it["name"]!!.jsonPrimitive.content == name }
+        served["locked"]!!.jsonPrimitive.content shouldBe "true"
+        served["maxVelocity"]!!.jsonPrimitive.content shouldBe "321"
+        call("GET", "/transportOrders/Busy").statusCode() shouldBe 200
+        call("GET", "/vehicles/Vehicle-01").body() shouldContain "\"paused\":true"
+        PlantModelFiles.read(PublishedModelFile(data.toPath()).file).path(name)!!.maxVelocity shouldBe 321
     }
 })
