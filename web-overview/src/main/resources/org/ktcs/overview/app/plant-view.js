@@ -19,6 +19,8 @@ export class PlantView {
     this.onSelect = onSelect;
     /** @type {((vehicle: string | null) => void) | undefined} Told which vehicle the view follows, if any. */
     this.onFollowChange = undefined;
+    /** @type {any} The modelling mode's tool while it draws the plant (pointer input and overlay go to it). */
+    this.tool = null;
     this.view = new ViewTransform();
     this.geometry = null;
     this.hiddenLayers = new Set();

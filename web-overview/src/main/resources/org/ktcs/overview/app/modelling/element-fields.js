@@ -19,6 +19,7 @@ const percent = (v) => (Number.isInteger(v) && v >= 0 && v <= 100 ? null : 'must
 const whole = (v) => (Number.isInteger(v) ? null : 'must be a whole number');
 
 /** A number field for [path] (e.g. "position.x") of the element. */
+/** @returns {Field} */
 function number(key, label, check = whole) {
   const parts = key.split('.');
   return {
@@ -28,16 +29,24 @@ function number(key, label, check = whole) {
   };
 }
 
+/**
+ * @param {any} object
+ * @param {string[]} path
+ * @param {any} value
+ * @returns {any}
+ */
 function setIn(object, [first, ...rest], value) {
   return { ...object, [first]: rest.length ? setIn(object[first] ?? {}, rest, value) : value };
 }
 
+/** @returns {Field} */
 function choice(key, label, options) {
   const parts = key.split('.');
   return { key, label, type: 'select', options, get: (e) => parts.reduce((o, p) => o?.[p], e), set: (e, v) => setIn(e, parts, v) };
 }
 
 /** A comma-separated list of names. */
+/** @returns {Field} */
 function list(key, label) {
   return {
     key, label, type: 'list',
@@ -50,6 +59,7 @@ const layer = choice('layout.layerId', 'Layer', (model) => (model.visualLayout?.
 layer.set = (e, v) => setIn(e, ['layout', 'layerId'], Number(v));
 layer.get = (e) => String(e.layout?.layerId ?? 0);
 
+/** @type {Field} */
 const orientation = {
   key: 'vehicleOrientationAngle', label: 'Vehicle orientation (°, empty: any)', type: 'text',
   get: (e) => (e.vehicleOrientationAngle === 'NaN' || Number.isNaN(e.vehicleOrientationAngle) ? '' : String(e.vehicleOrientationAngle)),
@@ -57,6 +67,7 @@ const orientation = {
   check: (v) => (v.trim() === '' || Number.isFinite(Number(v)) ? null : 'must be an angle in degrees, or empty'),
 };
 
+/** @type {Field} */
 const controlPoints = {
   key: 'controlPoints', label: 'Control points (layout x,y; …)', type: 'text',
   get: (e) => (e.layout?.controlPoints ?? []).map((c) => `${c.x},${c.y}`).join('; '),
@@ -70,6 +81,7 @@ function parseCouples(text) {
   return couples.every((c) => c.length === 2 && c.every(Number.isInteger)) ? couples.map(([x, y]) => ({ x, y })) : null;
 }
 
+/** @type {Field} */
 const connectionType = {
   key: 'layout.connectionType', label: 'Connection type', type: 'select', options: () => CONNECTION_TYPES,
   get: (e) => e.layout?.connectionType ?? 'DIRECT', set: (e, v, model) => withConnectionType(model, e, v),

@@ -43,9 +43,7 @@ export class KernelFiles {
       try {
         reason = JSON.parse(text).join('; ');
       } catch { /* not kTCS's error array */ }
-      const error = new Error(reason || `HTTP ${response.status}`);
-      error.status = response.status;
-      throw error;
+      throw Object.assign(new Error(reason || `HTTP ${response.status}`), { status: response.status });
     }
     return response;
   }
