@@ -1,8 +1,8 @@
 package org.ktcs.kernel.app
 
 import org.ktcs.api.model.PlantModel
-import org.ktcs.kernel.persistence.ModelRead
 import org.ktcs.kernel.persistence.ModelFileException
+import org.ktcs.kernel.persistence.ModelRead
 import org.ktcs.kernel.persistence.PlantModelFiles
 import org.ktcs.kernel.persistence.PublishedModelFile
 import org.ktcs.kernel.validation.InvalidModelException

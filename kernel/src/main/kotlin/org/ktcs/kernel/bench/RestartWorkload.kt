@@ -9,10 +9,10 @@ import org.ktcs.api.order.Route
 import org.ktcs.api.order.Step
 import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.order.TransportOrderState
+import org.ktcs.kernel.orders.HistoryCodes
 import org.ktcs.kernel.store.StateStore
 import org.ktcs.kernel.store.StoreChange
 import org.ktcs.kernel.store.StoreTable
-import org.ktcs.kernel.orders.HistoryCodes
 import java.io.File
 import java.nio.file.Files
 import java.nio.file.Path

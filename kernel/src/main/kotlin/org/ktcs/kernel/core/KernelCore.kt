@@ -32,9 +32,9 @@ import org.ktcs.kernel.orders.OrderLifecycle
 import org.ktcs.kernel.orders.OrderSequencePool
 import org.ktcs.kernel.orders.TransportOrderFactory
 import org.ktcs.kernel.orders.TransportOrderPool
+import org.ktcs.kernel.store.CommitBarrier
 import org.ktcs.kernel.validation.InvalidModelException
 import org.ktcs.kernel.validation.PlantModelValidator
-import org.ktcs.kernel.store.CommitBarrier
 import org.ktcs.kernel.vehicles.VehicleControllers
 import org.ktcs.kernel.vehicles.VehicleEnvironment
 import org.ktcs.kernel.workingset.ObjectNames

@@ -3,8 +3,8 @@ package org.ktcs.kernel.services
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.service.PlantModelService
 import org.ktcs.kernel.core.KernelCore
-import org.ktcs.kernel.store.durably
 import org.ktcs.kernel.persistence.PublishedModelFile
+import org.ktcs.kernel.store.durably
 
 /** The plant-model service; a model that replaces the plant is first saved to [published] (when given). */
 class StandardPlantModelService(

@@ -1,7 +1,7 @@
 package org.ktcs.kernel.store
 
-import org.ktcs.kernel.config.Durability
 import org.ktcs.extension.config.KtcsConfig
+import org.ktcs.kernel.config.Durability
 import org.ktcs.kernel.config.KtcsSettings
 import org.ktcs.kernel.config.PersistenceSettings
 import org.ktcs.kernel.config.RecoveryMode

@@ -5,9 +5,9 @@ import org.koin.dsl.bind
 import org.koin.dsl.koinApplication
 import org.koin.dsl.module
 import org.ktcs.api.driver.VehicleDriverFactory
+import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.config.ConfigLoader
-import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.kernel.context.VirtualTimeKernelContext
 import org.ktcs.kernel.core.KernelCore
 import org.ktcs.kernel.core.StepDriverFactory

@@ -9,10 +9,10 @@ import io.ktor.server.routing.post
 import io.ktor.utils.io.toByteArray
 import kotlinx.serialization.Serializable
 import org.ktcs.api.error.InvalidRequestException
-import org.ktcs.kernel.validation.ModelProblem
-import org.ktcs.kernel.validation.PlantModelValidator
 import org.ktcs.kernel.persistence.ModelFileException
 import org.ktcs.kernel.persistence.PlantModelFiles
+import org.ktcs.kernel.validation.ModelProblem
+import org.ktcs.kernel.validation.PlantModelValidator
 import org.ktcs.kernel.web.v1.receiveJson
 
 /**
