@@ -15,6 +15,7 @@ include(
     "adapters-loopback",
     "web-overview",
     "xml-channels",
+    "adapters-vda5050",
     "examples:tcp-vehicle-driver",
     "examples:nearest-vehicle-dispatcher",
     "examples:overview-panel-theme",

@@ -353,7 +353,7 @@ object KtcsSettings {
         loopbackPositionReportInterval,
         overviewVehicleTheme,
         overviewLocationTheme,
-    ) + WatchdogSettings.all + extensionsDirectory + dataDirectory
+    ) + WatchdogSettings.all + Vda5050Settings.all + extensionsDirectory + dataDirectory
 }
 
 /** Log levels a user can choose, in SLF4J's names. */

@@ -1,0 +1,10 @@
+plugins {
+    id("ktcs.kotlin-jvm")
+}
+
+dependencies {
+    compileOnly(project(":kernel"))
+    implementation(libs.hivemq.mqtt.client)
+    implementation(libs.hivemq.community.edition.embedded)
+    implementation(libs.json.schema.validator)
+}
