@@ -98,7 +98,10 @@ class Vda5050Driver(
 
     private fun orderPrefix(command: MovementCommand) = "${command.transportOrder}/${command.driveOrder}"
 
-    override fun onCommandQueueCleared() {
+    override fun onCommandQueueCleared() = cancelOrder()
+
+    /** Drops the vehicle's order: cancelOrder, and no new order until the vehicle has confirmed it. */
+    private fun cancelOrder() {
         deferred.clear()
         if (order == null) return
         order = null
@@ -208,7 +211,12 @@ class Vda5050Driver(
         if (properties.validateIncomingMessages) {
             val problems = MessageValidator.problems(kind, json)
             if (problems.isNotEmpty()) {
-                log.warn("vehicle {}: dropped an invalid {} message: {}", vehicleName, kind.name.lowercase(), problems.take(3).joinToString("; "))
+                log.warn(
+                    "vehicle {}: dropped an invalid {} message: {}",
+                    vehicleName,
+                    kind.name.lowercase(),
+                    problems.take(MAX_PROBLEMS_LOGGED).joinToString("; "),
+                )
                 return
             }
         }
@@ -324,8 +332,7 @@ class Vda5050Driver(
         context.notifyUser(NotificationLevel.IMPORTANT, "VDA 5050 vehicle $vehicleName: $reason")
         rejections = 0
         val failed = pendingCommands.firstOrNull()
-        order = null
-        deferred.clear()
+        cancelOrder()
         failed?.let(::onCommandFailed)
     }
 
@@ -375,5 +382,6 @@ class Vda5050Driver(
         /** The transport-order property that says why the vehicle failed the order. */
         const val FAILURE_PROPERTY = "vda5050:failureReason"
         private const val MM_PER_M = 1000.0
+        private const val MAX_PROBLEMS_LOGGED = 5
     }
 }

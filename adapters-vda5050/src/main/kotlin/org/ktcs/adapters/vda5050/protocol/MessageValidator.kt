@@ -28,7 +28,9 @@ object MessageValidator {
             registry.getSchema(SchemaLocation.of("classpath:$SCHEMAS/${it.schemaFile}"))
         }
         return try {
-            schema.validate(json, InputFormat.JSON).map { "${it.instanceLocation}: ${it.message}" }
+            schema.validate(json, InputFormat.JSON).map { error ->
+                "${error.instanceLocation.toString().ifEmpty { "$" }}: ${error.message}"
+            }
         } catch (error: RuntimeException) {
             listOf("not JSON: ${error.message?.lineSequence()?.firstOrNull()}")
         }

@@ -42,6 +42,8 @@ data class SimulatedVehicleSpec(
     val actionMillis: Long = 1000,
     val stateIntervalMillis: Long = 1000,
     val visualizationIntervalMillis: Long = 100,
+    /** How much faster than real time the vehicle drives and acts (2.0: twice as fast). */
+    val timeFactor: Double = 1.0,
 )
 
 /**
@@ -230,7 +232,7 @@ class SimulatedVehicle(
         val dx = position.x - x
         val dy = position.y - y
         val distance = hypot(dx, dy)
-        val travel = speed * millis / 1000.0
+        val travel = speed * spec.timeFactor * millis / 1000.0
         if (distance <= travel) {
             x = position.x
             y = position.y
@@ -256,7 +258,7 @@ class SimulatedVehicle(
     private fun startNextAction(now: Long) {
         val action = runningActions.firstOrNull() ?: return
         actionStates[action.actionId] = ActionState(action.actionId, "RUNNING", action.actionType)
-        actionEndsAt = now + spec.actionMillis
+        actionEndsAt = now + (spec.actionMillis / spec.timeFactor).toLong()
     }
 
     private fun finishAction(now: Long) {
