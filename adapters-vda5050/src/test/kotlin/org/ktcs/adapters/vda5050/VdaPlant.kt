@@ -86,6 +86,15 @@ class VdaPlant(
     }
     val vehicles: List<SimulatedVehicle> = if (simulateLater) emptyList() else starts.mapIndexed { i, start -> simulated(i, start) }
 
+    private val running = vehicles.toMutableList()
+
+    /** Stops the [index]th simulated vehicle and plays it again from where it stands, connected to [endpoint]. */
+    fun replaceVehicle(index: Int, endpoint: BrokerEndpoint): SimulatedVehicle {
+        running[index].close()
+        val at = vehicle(index)["currentPosition"]!!.jsonPrimitive.content
+        return simulated(index, at, endpoint).also { running[index] = it }
+    }
+
     fun vehicleName(index: Int): String = model.model.vehicles[index].name
 
     /** A simulated vehicle for the [index]th VDA vehicle, on point [start], started. */
@@ -149,7 +158,7 @@ class VdaPlant(
     }
 
     override fun close() {
-        vehicles.forEach { runCatching { it.close() } }
+        running.forEach { runCatching { it.close() } }
         runCatching { spy.close() }
         application.stop()
         executor.shutdownNow()
