@@ -9,7 +9,10 @@ import org.ktcs.adapters.vda5050.protocol.Vda
  * Maps kTCS operations and the `vda5050:action.*` / `vda5050:destinationAction.*` properties of points, paths,
  * locations, location types and orders to VDA 5050 actions, as openTCS's driver does.
  */
-internal class ActionMapping(private val properties: Vda5050Properties, private val vehicleProperties: Map<String, String>) {
+internal class ActionMapping(
+    private val properties: Vda5050Properties,
+    private val vehicleProperties: Map<String, String>,
+) {
     private var nextId = 0L
 
     /**
@@ -26,7 +29,10 @@ internal class ActionMapping(private val properties: Vda5050Properties, private 
         val specific = "vda5050:destinationAction.$operation."
         val blocking = merged["${specific}blockingType"] ?: merged["vda5050:destinationAction.blockingType"]
             ?: if (type == Vda.PICK || type == Vda.DROP) "HARD" else "NONE"
-        val parameters = parameters(merged, "${specific}parameter.") + parameters(merged, "vda5050:destinationAction.parameter.")
+        val parameters = parameters(
+            merged,
+            "${specific}parameter.",
+        ) + parameters(merged, "vda5050:destinationAction.parameter.")
         return Action(type, newId(), overridden(type, blocking), parameters.distinctBy { it.key })
     }
 

@@ -13,7 +13,12 @@ internal data class SentStep(val command: MovementCommand, val edge: Edge?, val 
 }
 
 /** One order message to publish: its update id and its released (base) and horizon nodes and edges. */
-internal data class OrderUpdate(val orderId: String, val orderUpdateId: Long, val nodes: List<Node>, val edges: List<Edge>)
+internal data class OrderUpdate(
+    val orderId: String,
+    val orderUpdateId: Long,
+    val nodes: List<Node>,
+    val edges: List<Edge>,
+)
 
 /**
  * One VDA 5050 order (one kTCS drive order): the steps released to the vehicle so far (the base, which only grows)
@@ -44,7 +49,8 @@ internal class OrderTracker(
     fun extend(command: MovementCommand, startPoint: String, horizon: List<Pair<String?, String>>): OrderUpdate {
         if (baseNodes.isEmpty() && command.step.path == null) {
             // A route that starts where the vehicle stands: the order is that one node, with the operation's actions.
-            val only = node(command.step.destinationPoint, 0, released = true, extraActions = destinationActions(command))
+            val only =
+                node(command.step.destinationPoint, 0, released = true, extraActions = destinationActions(command))
             steps += SentStep(command, null, only)
             baseNodes += only
             return update(horizon)
@@ -56,7 +62,8 @@ internal class OrderTracker(
         val sequence = previous.sequenceId + 2
         val path = command.step.path
         val edge = path?.let { edge(it, previous.nodeId, command.step.destinationPoint, sequence - 1, released = true) }
-        val node = node(command.step.destinationPoint, sequence, released = true, extraActions = destinationActions(command))
+        val node =
+            node(command.step.destinationPoint, sequence, released = true, extraActions = destinationActions(command))
         steps += SentStep(command, edge, node)
         baseNodes += node
         edge?.let { baseEdges += it }
@@ -96,7 +103,9 @@ internal class OrderTracker(
 
     private fun destinationActions(command: MovementCommand): List<Action> {
         val model = plant()
-        val pointActions = model.point(command.step.destinationPoint)?.properties?.let(actions::elementActions).orEmpty()
+        val pointActions = model.point(
+            command.step.destinationPoint,
+        )?.properties?.let(actions::elementActions).orEmpty()
         if (!command.hasOperation) return pointActions
         val location = command.opLocation?.let(model::location)
         val sources = listOfNotNull(

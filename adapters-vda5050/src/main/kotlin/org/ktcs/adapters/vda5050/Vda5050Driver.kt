@@ -51,6 +51,7 @@ class Vda5050Driver(
     private var connectionState = "UNKNOWN"
     private var lastState: State? = null
     private var lastStateAt: Instant? = null
+
     @Volatile private var lastVisualizationMillis = 0L
     private var factsheet: JsonObject? = null
     private var reportedErrors: Set<String> = emptySet()
@@ -60,7 +61,12 @@ class Vda5050Driver(
 
     override fun onEnabled() {
         val mqtt = link()
-        subscribe(mqtt, properties.connection.name, properties.connection.qos.coerceAtLeast(1), IncomingTopic.CONNECTION)
+        subscribe(
+            mqtt,
+            properties.connection.name,
+            properties.connection.qos.coerceAtLeast(1),
+            IncomingTopic.CONNECTION,
+        )
         subscribe(mqtt, properties.state.name, properties.state.qos, IncomingTopic.STATE)
         subscribe(mqtt, properties.visualization.name, properties.visualization.qos, IncomingTopic.VISUALIZATION)
         subscribe(mqtt, properties.factsheet.name, properties.factsheet.qos, IncomingTopic.FACTSHEET)
@@ -115,11 +121,18 @@ class Vda5050Driver(
 
     override fun processMessage(message: DriverMessage) {
         val action = when (message.type) {
-            INIT_POSITION -> initPosition(message.parameters["point"] ?: throw IllegalArgumentException("parameter 'point' is missing"))
+            INIT_POSITION -> initPosition(
+                message.parameters["point"] ?: throw IllegalArgumentException("parameter 'point' is missing"),
+            )
+
             STATE_REQUEST -> Action(Vda.STATE_REQUEST, actions.newId(), "NONE")
+
             FACTSHEET_REQUEST -> Action(Vda.FACTSHEET_REQUEST, actions.newId(), "NONE")
+
             START_PAUSE -> Action(Vda.START_PAUSE, actions.newId(), "NONE")
+
             STOP_PAUSE -> Action(Vda.STOP_PAUSE, actions.newId(), "NONE")
+
             else -> throw IllegalArgumentException("unknown message type '${message.type}'")
         }
         sendInstantActions(listOf(action))
@@ -128,8 +141,13 @@ class Vda5050Driver(
     override fun panelState(): Map<String, String> = buildMap {
         put("connection", connectionState)
         put("lastStateAt", lastStateAt?.toString() ?: "")
-        put("stateAgeMillis", lastStateAt?.let { (context.clock.now().toEpochMilli() - it.toEpochMilli()).toString() } ?: "")
-        put("errors", lastState?.errors?.joinToString("; ") { "${it.errorLevel} ${it.errorType}${it.errorDescription?.let { d -> ": $d" } ?: ""}" }.orEmpty())
+        put(
+            "stateAgeMillis",
+            lastStateAt?.let {
+                (context.clock.now().toEpochMilli() - it.toEpochMilli()).toString()
+            }.orEmpty(),
+        )
+        put("errors", lastState?.errors?.joinToString("; ") { describe(it) }.orEmpty())
         put("orderId", order?.orderId ?: lastState?.orderId.orEmpty())
         put("orderUpdateId", lastState?.orderUpdateId?.toString().orEmpty())
         put("topicPrefix", properties.topicPrefix)
@@ -170,7 +188,8 @@ class Vda5050Driver(
 
     private fun factsheetLimit(array: String): Int = runCatching {
         val lens = (factsheet?.get("protocolLimits") as? JsonObject)?.get("maxArrayLens") as? JsonObject
-        (lens?.get(array) as? JsonPrimitive)?.content?.toInt()?.let { (it - properties.maxStepsBase - 1).coerceAtLeast(0) }
+        val nodes = (lens?.get(array) as? JsonPrimitive)?.content?.toInt()
+        nodes?.let { (it - properties.maxStepsBase - 1).coerceAtLeast(0) }
     }.getOrNull() ?: Int.MAX_VALUE
 
     private fun mapIdOf(point: String): String =
@@ -187,8 +206,12 @@ class Vda5050Driver(
 
     private fun sendInstantActions(list: List<Action>) {
         val message = InstantActions(
-            nextHeader("instantActions"), timestamp(), Vda.PROTOCOL_VERSION, properties.manufacturer,
-            properties.serialNumber, list,
+            nextHeader("instantActions"),
+            timestamp(),
+            Vda.PROTOCOL_VERSION,
+            properties.manufacturer,
+            properties.serialNumber,
+            list,
         )
         publish(
             properties.instantActions.name,
@@ -207,7 +230,7 @@ class Vda5050Driver(
 
     /** On the MQTT client's thread: validate and parse, then handle in the kernel context. */
     private fun received(kind: IncomingTopic, payload: ByteArray) {
-        // Most traffic is visualization (10 Hz per vehicle): what the interval drops costs neither validation nor parsing.
+        // Most traffic is visualization (10 Hz per vehicle): what the interval drops is neither validated nor parsed.
         if (kind == IncomingTopic.VISUALIZATION && !visualizationDue()) return
         val json = String(payload, Charsets.UTF_8)
         if (properties.validateIncomingMessages) {
@@ -224,16 +247,33 @@ class Vda5050Driver(
         }
         try {
             when (kind) {
-                IncomingTopic.STATE -> Vda5050Json.decodeFromString(State.serializer(), json).let { inKernel { onState(it) } }
-                IncomingTopic.CONNECTION -> Vda5050Json.decodeFromString(Connection.serializer(), json).let { inKernel { onConnection(it) } }
-                IncomingTopic.VISUALIZATION -> onVisualization(Vda5050Json.decodeFromString(Visualization.serializer(), json))
-                IncomingTopic.FACTSHEET -> Vda5050Json.parseToJsonElement(json).let { inKernel { factsheet = it as? JsonObject } }
+                IncomingTopic.STATE -> {
+                    val state = Vda5050Json.decodeFromString(State.serializer(), json)
+                    inKernel { onState(state) }
+                }
+
+                IncomingTopic.CONNECTION -> {
+                    val connection = Vda5050Json.decodeFromString(Connection.serializer(), json)
+                    inKernel { onConnection(connection) }
+                }
+
+                IncomingTopic.VISUALIZATION ->
+                    onVisualization(Vda5050Json.decodeFromString(Visualization.serializer(), json))
+
+                IncomingTopic.FACTSHEET -> {
+                    val sheet = Vda5050Json.parseToJsonElement(json) as? JsonObject
+                    inKernel { factsheet = sheet }
+                }
             }
         } catch (error: SerializationException) {
-            log.warn("vehicle {}: dropped an unreadable {} message: {}", vehicleName, kind.name.lowercase(), error.message)
+            unreadable(kind, error)
         } catch (error: IllegalArgumentException) {
-            log.warn("vehicle {}: dropped an unreadable {} message: {}", vehicleName, kind.name.lowercase(), error.message)
+            unreadable(kind, error)
         }
+    }
+
+    private fun unreadable(kind: IncomingTopic, error: Exception) {
+        log.warn("vehicle {}: dropped an unreadable {} message: {}", vehicleName, kind.name.lowercase(), error.message)
     }
 
     private fun inKernel(action: () -> Unit) = context.clock.schedule(0) {
@@ -247,13 +287,19 @@ class Vda5050Driver(
         when (message.connectionState) {
             Vda.ONLINE -> {
                 context.reportState(VehicleState.IDLE)
-                if (previous != "UNKNOWN") context.notifyUser(NotificationLevel.INFORMATIONAL, "VDA 5050 vehicle $vehicleName is online again")
+                if (previous != "UNKNOWN") {
+                    context.notifyUser(NotificationLevel.INFORMATIONAL, "VDA 5050 vehicle $vehicleName is online again")
+                }
                 sendInstantActions(listOf(Action(Vda.STATE_REQUEST, actions.newId(), "NONE"))) // resynchronise
             }
+
             else -> {
                 context.reportState(VehicleState.UNKNOWN)
-                val holding = if (pendingCommands.isNotEmpty()) "; it keeps its allocated resources, as it is still physically there" else ""
-                context.notifyUser(NotificationLevel.IMPORTANT, "VDA 5050 vehicle $vehicleName is ${message.connectionState}$holding")
+                val holding = if (pendingCommands.isEmpty()) "" else KEEPS_RESOURCES
+                context.notifyUser(
+                    NotificationLevel.IMPORTANT,
+                    "VDA 5050 vehicle $vehicleName is ${message.connectionState}$holding",
+                )
             }
         }
         context.publishEvent("vda5050:connection", mapOf("state" to message.connectionState))
@@ -281,7 +327,9 @@ class Vda5050Driver(
         }
         state.agvPosition?.let { reportPose(it.x, it.y, it.theta) }
         context.reportEnergyLevel(state.batteryState.batteryCharge.toInt().coerceIn(0, 100))
-        val devices = state.loads.orEmpty().mapIndexed { i, load -> LoadHandlingDevice(load.loadPosition?.takeIf { it.isNotEmpty() } ?: "LHD-$i", true) }
+        val devices = state.loads.orEmpty().mapIndexed { i, load ->
+            LoadHandlingDevice(load.loadPosition?.takeIf { it.isNotEmpty() } ?: "LHD-$i", full = true)
+        }
         if (devices != context.vehicle().loadHandlingDevices) context.reportLoadHandlingDevices(devices)
         reportProperties(state)
         context.reportState(vehicleStateOf(state))
@@ -310,7 +358,8 @@ class Vda5050Driver(
             val nodeDone = step.node.sequenceId !in nodes
             val failed = step.actionIds.mapNotNull(statuses::get).firstOrNull { it.actionStatus == Vda.FAILED }
             if (failed != null) {
-                failOrder("action ${failed.actionType ?: failed.actionId} failed: ${failed.resultDescription ?: "no reason given"}")
+                val reason = failed.resultDescription ?: "no reason given"
+                failOrder("action ${failed.actionType ?: failed.actionId} failed: $reason")
                 return
             }
             val actionsDone = step.actionIds.all { statuses[it]?.actionStatus == Vda.FINISHED }
@@ -349,24 +398,34 @@ class Vda5050Driver(
         }
         if (errors != reportedErrors) {
             reportedErrors = errors
-            context.setVehicleProperty("vda5050:errors.fatal", joined(state.errors.filter { it.errorLevel == Vda.FATAL }.map { it.errorType }))
-            context.setVehicleProperty("vda5050:errors.warning", joined(state.errors.filter { it.errorLevel == Vda.WARNING }.map { it.errorType }))
+            context.setVehicleProperty("vda5050:errors.fatal", errorTypes(state, Vda.FATAL))
+            context.setVehicleProperty("vda5050:errors.warning", errorTypes(state, Vda.WARNING))
         }
         val paused = state.paused?.toString()
-        if (context.vehicle().properties["vda5050:paused"] != paused) context.setVehicleProperty("vda5050:paused", paused)
+        if (context.vehicle().properties["vda5050:paused"] != paused) {
+            context.setVehicleProperty("vda5050:paused", paused)
+        }
     }
 
-    private fun joined(values: List<String>) = values.takeIf { it.isNotEmpty() }?.joinToString(" | ")
+    private fun errorTypes(state: State, level: String): String? =
+        state.errors.filter {
+            it.errorLevel == level
+        }.map { it.errorType }.takeIf { it.isNotEmpty() }?.joinToString(" | ")
 
     private fun describe(error: org.ktcs.adapters.vda5050.protocol.VehicleError) =
         "${error.errorLevel} ${error.errorType}${error.errorDescription?.let { ": $it" } ?: ""}"
 
     private fun vehicleStateOf(state: State): VehicleState = when {
         state.errors.any { it.errorLevel == Vda.FATAL } -> VehicleState.ERROR
+
         state.operatingMode != "AUTOMATIC" && state.operatingMode != "SEMIAUTOMATIC" -> VehicleState.UNAVAILABLE
+
         state.batteryState.charging -> VehicleState.CHARGING
+
         state.driving || state.nodeStates.isNotEmpty() || state.edgeStates.isNotEmpty() ||
-            state.actionStates.any { it.actionStatus != Vda.FINISHED && it.actionStatus != Vda.FAILED } -> VehicleState.EXECUTING
+            state.actionStates.any { it.actionStatus != Vda.FINISHED && it.actionStatus != Vda.FAILED } ->
+            VehicleState.EXECUTING
+
         else -> VehicleState.IDLE
     }
 
@@ -389,5 +448,6 @@ class Vda5050Driver(
         const val FAILURE_PROPERTY = "vda5050:failureReason"
         private const val MM_PER_M = 1000.0
         private const val MAX_PROBLEMS_LOGGED = 5
+        private const val KEEPS_RESOURCES = "; it keeps its allocated resources, as it is still physically there"
     }
 }

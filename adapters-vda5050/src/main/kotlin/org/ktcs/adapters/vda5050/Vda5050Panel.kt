@@ -18,7 +18,10 @@ internal object Vda5050Panel {
                 listOf(DriverParameter("point", ParameterType.POINT, "the point")),
             ),
             DriverCommand(Vda5050Driver.STATE_REQUEST, "Sends stateRequest: asks the vehicle for a state message"),
-            DriverCommand(Vda5050Driver.FACTSHEET_REQUEST, "Sends factsheetRequest: asks the vehicle for its factsheet"),
+            DriverCommand(
+                Vda5050Driver.FACTSHEET_REQUEST,
+                "Sends factsheetRequest: asks the vehicle for its factsheet",
+            ),
             DriverCommand(Vda5050Driver.START_PAUSE, "Sends startPause: the vehicle stops where it is"),
             DriverCommand(Vda5050Driver.STOP_PAUSE, "Sends stopPause: the vehicle goes on"),
         ),

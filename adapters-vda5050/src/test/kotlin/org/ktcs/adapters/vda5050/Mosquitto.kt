@@ -9,7 +9,11 @@ import java.util.concurrent.TimeUnit
  * Debian's Mosquitto, started by a test on a free port of the loopback interface with anonymous access; `null` (with
  * the reason printed) where it is not installed, unless `KTCS_REQUIRE_MOSQUITTO=1` (CI) makes that a failure.
  */
-class Mosquitto private constructor(private val process: Process, val port: Int, private val dir: Path) : AutoCloseable {
+class Mosquitto private constructor(
+    private val process: Process,
+    val port: Int,
+    private val dir: Path,
+) : AutoCloseable {
     val url: String get() = "tcp://127.0.0.1:$port"
 
     override fun close() {
@@ -27,7 +31,9 @@ class Mosquitto private constructor(private val process: Process, val port: Int,
                 check(System.getenv("KTCS_REQUIRE_MOSQUITTO") != "1") {
                     "KTCS_REQUIRE_MOSQUITTO=1 but mosquitto is not installed (apt-get install -y mosquitto)"
                 }
-                println("SKIPPED: the VDA 5050 tests against Mosquitto need Debian's mosquitto (apt-get install -y mosquitto)")
+                println(
+                    "SKIPPED: the VDA 5050 tests against Mosquitto need Debian's mosquitto (apt-get install -y mosquitto)",
+                )
                 return null
             }
             val port = freePort()

@@ -21,8 +21,14 @@ class Vda5050AttachTest : FunSpec({
         val (v1, v2, v3, v4) = demo.model.vehicles
         val vehicles = listOf(
             v1.copy(properties = vdaProperties("S1")),
-            v2.copy(properties = vdaProperties("S2") + ("tcs:preferredAdapterClass" to Vda5050DriverFactory.OPENTCS_FACTORY)),
-            v3.copy(properties = vdaProperties("S3") - "vda5050:serialNumber" + ("tcs:preferredAdapterClass" to "vda5050")),
+            v2.copy(
+                properties = vdaProperties(
+                    "S2",
+                ) + ("tcs:preferredAdapterClass" to Vda5050DriverFactory.OPENTCS_FACTORY),
+            ),
+            v3.copy(
+                properties = vdaProperties("S3") - "vda5050:serialNumber" + ("tcs:preferredAdapterClass" to "vda5050"),
+            ),
             v4,
         )
         val port = freePort()

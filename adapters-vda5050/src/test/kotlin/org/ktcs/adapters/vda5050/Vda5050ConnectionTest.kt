@@ -14,7 +14,7 @@ import kotlin.time.Duration.Companion.seconds
  * resynchronises and the order finishes.
  */
 class Vda5050ConnectionTest : FunSpec({
-    val plant = VdaPlant(listOf("Point-0001"), timeFactor = 2.0, simulateLater = true)
+    val plant = VdaPlant(listOf("Point-0001"), timeFactor = 5.0, simulateLater = true)
     afterSpec { plant.close() }
 
     test("connection loss via the last will, and recovery") {

@@ -14,10 +14,10 @@ import kotlin.time.Duration.Companion.seconds
 
 /**
  * Pause and resume, immediate withdrawal (cancelOrder), a schema-invalid message, and a vehicle error mid-order,
- * with one simulated vehicle over the embedded broker. Slow vehicles (time factor 2) so the test can act mid-way.
+ * with one simulated vehicle over the embedded broker. Slower vehicles (time factor 4) so the test can act mid-way.
  */
 class Vda5050InstantActionsTest : FunSpec({
-    val plant = VdaPlant(listOf("Point-0001"), timeFactor = 2.0)
+    val plant = VdaPlant(listOf("Point-0001"), timeFactor = 4.0)
     val notifications = notificationsOf(plant.application.kernel)
     val driverLog = logLinesOf(Vda5050Driver::class.java.name)
     afterSpec { plant.close() }

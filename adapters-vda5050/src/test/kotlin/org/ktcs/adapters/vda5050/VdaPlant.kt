@@ -73,18 +73,28 @@ class VdaPlant(
     val application = KernelApplication(config, model, listOf(Vda5050Extension()))
     private val base = Regex("web API (http://\\S+)/v1").find(application.start())!!.groupValues[1]
     private val http = HttpClient.newHttpClient()
-    private val executor = Executors.newSingleThreadScheduledExecutor { Thread(it, "vda-sim").apply { isDaemon = true } }
+    private val executor = Executors.newSingleThreadScheduledExecutor {
+        Thread(it, "vda-sim").apply { isDaemon = true }
+    }
     val orders: MutableList<Order> = Collections.synchronizedList(mutableListOf())
     val instantActions: MutableList<InstantActions> = Collections.synchronizedList(mutableListOf())
     private val spy = MqttLink("spy-${System.nanoTime()}", endpoint).also { spy ->
         spy.connect()
-        spy.subscribe("uagv/v2/kTCS/+/order", 1) { orders += Vda5050Json.decodeFromString(Order.serializer(), String(it)) }
+        spy.subscribe("uagv/v2/kTCS/+/order", 1) {
+            orders += Vda5050Json.decodeFromString(Order.serializer(), String(it))
+        }
             .get()
         spy.subscribe("uagv/v2/kTCS/+/instantActions", 1) {
             instantActions += Vda5050Json.decodeFromString(InstantActions.serializer(), String(it))
         }.get()
     }
-    val vehicles: List<SimulatedVehicle> = if (simulateLater) emptyList() else starts.mapIndexed { i, start -> simulated(i, start) }
+    val vehicles: List<SimulatedVehicle> = if (simulateLater) {
+        emptyList()
+    } else {
+        starts.mapIndexed { i, start ->
+            simulated(i, start)
+        }
+    }
 
     private val running = vehicles.toMutableList()
 

@@ -46,13 +46,18 @@ data class Vda5050BenchOptions(
             while (i < args.size) {
                 options = when (val arg = args[i]) {
                     "--vehicles" -> options.copy(vehicles = number().toInt())
+
                     "--orders" -> options.copy(orders = number().toInt())
+
                     "--grid" -> options.copy(grid = number().toInt())
+
                     "--timeout" -> options.copy(timeoutSeconds = number())
+
                     "--time-factor" -> options.copy(
                         timeFactor = args.getOrNull(++i)?.toDoubleOrNull()?.takeIf { it > 0 }
                             ?: throw IllegalArgumentException("--time-factor needs a positive number"),
                     )
+
                     else -> throw IllegalArgumentException("unknown option '$arg'")
                 }
                 i++
@@ -77,12 +82,18 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
     private val orders = BenchOrders(plant, SEED).next("B", options.orders)
 
     fun run() {
-        println("vda5050-bench: ${options.vehicles} vehicles, ${options.orders} orders, ${options.grid}x${options.grid} grid, time factor ${options.timeFactor}")
+        println(
+            "vda5050-bench: ${options.vehicles} vehicles, ${options.orders} orders, ${options.grid}x${options.grid} grid, time factor ${options.timeFactor}",
+        )
         val (vda, roundTrips) = vdaRun()
         println(line("VDA 5050", vda))
         val loopback = loopbackRun()
         println(line("loopback", loopback))
-        println("kernel CPU per finished order, VDA 5050 / loopback: %.2f".format(vda.cpuPerOrderMillis / loopback.cpuPerOrderMillis))
+        println(
+            "kernel CPU per finished order, VDA 5050 / loopback: %.2f".format(
+                vda.cpuPerOrderMillis / loopback.cpuPerOrderMillis,
+            ),
+        )
         println(
             "broker round trip (QoS 0, %d samples): p50 %.2f ms, p99 %.2f ms, max %.2f ms".format(
                 roundTrips.size,
@@ -96,26 +107,37 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
 
     private fun line(kind: String, figures: RunFigures) =
         "%-9s finished %d/%d (failed %d) in %.1f s; kTCS CPU %.1f s, %.1f ms per finished order".format(
-            kind, figures.finished, options.orders, figures.failed, figures.wallSeconds, figures.cpuSeconds,
+            kind,
+            figures.finished,
+            options.orders,
+            figures.failed,
+            figures.wallSeconds,
+            figures.cpuSeconds,
             figures.cpuPerOrderMillis,
         )
 
     private fun vdaRun(): Pair<RunFigures, List<Double>> {
-        val model = plant.copy(vehicles = plant.vehicles.mapIndexed { i, vehicle ->
-            vehicle.copy(
-                properties = vehicle.properties + mapOf(
-                    "tcs:preferredAdapterClass" to "vda5050",
-                    "vda5050:version" to "2.0",
-                    "vda5050:interfaceName" to "uagv",
-                    "vda5050:manufacturer" to "kTCS",
-                    "vda5050:serialNumber" to "BENCH-%03d".format(i + 1),
-                ),
-            )
-        })
+        val model = plant.copy(
+            vehicles = plant.vehicles.mapIndexed { i, vehicle ->
+                vehicle.copy(
+                    properties = vehicle.properties + mapOf(
+                        "tcs:preferredAdapterClass" to "vda5050",
+                        "vda5050:version" to "2.0",
+                        "vda5050:interfaceName" to "uagv",
+                        "vda5050:manufacturer" to "kTCS",
+                        "vda5050:serialNumber" to "BENCH-%03d".format(i + 1),
+                    ),
+                )
+            },
+        )
         val file = work.resolve("vda5050-plant.xml").also { PlantModelFiles.write(model, it) }
         val broker = freePort()
         val ktcs = KtcsUnderTest.start(
-            launcher, file, freePort(), options.timeFactor, work.resolve("ktcs-vda5050.log").toFile(),
+            launcher,
+            file,
+            freePort(),
+            options.timeFactor,
+            work.resolve("ktcs-vda5050.log").toFile(),
             listOf("vda5050.embeddedBroker.port=$broker", "kernel.dataDirectory=${work.resolve("data-vda")}"),
         )
         val executor = Executors.newScheduledThreadPool(2) { Thread(it, "vda5050-sim").apply { isDaemon = true } }
@@ -139,10 +161,18 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
     }
 
     private fun loopbackRun(): RunFigures {
-        val model = plant.copy(vehicles = plant.vehicles.map { it.copy(properties = it.properties + ("tcs:preferredAdapterClass" to "loopback")) })
+        val model = plant.copy(
+            vehicles = plant.vehicles.map {
+                it.copy(properties = it.properties + ("tcs:preferredAdapterClass" to "loopback"))
+            },
+        )
         val file = work.resolve("loopback-plant.xml").also { PlantModelFiles.write(model, it) }
         return KtcsUnderTest.start(
-            launcher, file, freePort(), options.timeFactor, work.resolve("ktcs-loopback.log").toFile(),
+            launcher,
+            file,
+            freePort(),
+            options.timeFactor,
+            work.resolve("ktcs-loopback.log").toFile(),
             listOf("kernel.dataDirectory=${work.resolve("data-loopback")}"),
         ).use { ktcs ->
             ktcs.awaitReady(READY_SECONDS)
@@ -170,7 +200,9 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
 
     private fun finalStates(ktcs: KtcsUnderTest): Map<String, Int> {
         val text = ktcs.client.get("/transportOrders") ?: return emptyMap()
-        return kotlinx.serialization.json.Json.parseToJsonElement(text).let { it as kotlinx.serialization.json.JsonArray }
+        return kotlinx.serialization.json.Json.parseToJsonElement(text).let {
+            it as kotlinx.serialization.json.JsonArray
+        }
             .map { it as kotlinx.serialization.json.JsonObject }
             .filter { it.string("name")?.startsWith("B") == true }
             .mapNotNull { it.string("state") }
@@ -243,8 +275,9 @@ fun main(args: Array<String>) {
         exitProcess(2)
     }
     val launcher = Path.of(System.getProperty("ktcs.launcher") ?: "ktcs").toAbsolutePath()
-    require(Files.isExecutable(launcher)) { "the launcher $launcher is missing (run the bench with ./ktcs vda5050-bench)" }
+    require(Files.isExecutable(launcher)) {
+        "the launcher $launcher is missing (run the bench with ./ktcs vda5050-bench)"
+    }
     Vda5050Bench(options, launcher).run()
     exitProcess(0)
 }
-

@@ -29,13 +29,21 @@ data class BrokerSettings(
         }
         val tls = when (uri.scheme?.lowercase()) {
             "tcp", "mqtt" -> false
+
             "ssl", "tls", "mqtts" -> true
+
             else -> throw IllegalArgumentException(
                 "vda5050.brokerUrl '$url' must be 'embedded' or start with tcp://, mqtt://, ssl:// or mqtts://",
             )
         }
         require(!uri.host.isNullOrBlank()) { "vda5050.brokerUrl '$url' names no host" }
-        val port = if (uri.port > 0) uri.port else if (tls) 8883 else 1883
+        val port = if (uri.port > 0) {
+            uri.port
+        } else if (tls) {
+            8883
+        } else {
+            1883
+        }
         return BrokerEndpoint(uri.host, port, tls)
     }
 

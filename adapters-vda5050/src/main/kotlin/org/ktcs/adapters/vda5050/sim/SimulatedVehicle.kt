@@ -100,15 +100,26 @@ class SimulatedVehicle(
 
     fun start() {
         link.subscribe("$topic/order", 1) { payload -> executor.execute { guarded { onOrder(payload) } } }
-        link.subscribe("$topic/instantActions", 1) { payload -> executor.execute { guarded { onInstantActions(payload) } } }
+        link.subscribe("$topic/instantActions", 1) { payload ->
+            executor.execute { guarded { onInstantActions(payload) } }
+        }
         link.connect()
-        tick = executor.scheduleAtFixedRate({ guarded { step(TICK_MILLIS) } }, TICK_MILLIS, TICK_MILLIS, TimeUnit.MILLISECONDS)
+        tick = executor.scheduleAtFixedRate({
+            guarded { step(TICK_MILLIS) }
+        }, TICK_MILLIS, TICK_MILLIS, TimeUnit.MILLISECONDS)
     }
 
     /** Goes offline cleanly: publishes OFFLINE, then disconnects (the broker keeps the last will to itself). */
     override fun close() {
         tick?.cancel(false)
-        runCatching { link.publish("$topic/connection", connectionJson(Vda.OFFLINE, next("connection")), 1, retain = true).get(2, TimeUnit.SECONDS) }
+        runCatching {
+            link.publish(
+                "$topic/connection",
+                connectionJson(Vda.OFFLINE, next("connection")),
+                1,
+                retain = true,
+            ).get(2, TimeUnit.SECONDS)
+        }
         link.close()
     }
 
@@ -126,13 +137,21 @@ class SimulatedVehicle(
     private fun onOrder(payload: ByteArray) {
         val order = Vda5050Json.decodeFromString(Order.serializer(), String(payload))
         when {
-            order.orderId == orderId && order.orderUpdateId <= orderUpdateId -> return // a repetition: already known
+            order.orderId == orderId && order.orderUpdateId <= orderUpdateId -> return
+
+            // a repetition: already known
             order.orderId == orderId -> update(order)
+
             nodes.any { it.released } || edges.any { it.released } ->
                 reject("orderError", "order ${order.orderId} arrived while order $orderId is still running")
+
             order.nodes.firstOrNull()?.nodeId != lastNodeId && order.nodes.first().sequenceId == 0 &&
                 distanceTo(order.nodes.first()) > START_TOLERANCE_METRES ->
-                reject("noRouteError", "order ${order.orderId} starts at ${order.nodes.first().nodeId}, the vehicle is at $lastNodeId")
+                reject(
+                    "noRouteError",
+                    "order ${order.orderId} starts at ${order.nodes.first().nodeId}, the vehicle is at $lastNodeId",
+                )
+
             else -> accept(order)
         }
         publishState()
@@ -156,7 +175,10 @@ class SimulatedVehicle(
         val stitch = order.nodes.firstOrNull() ?: return
         val knownBase = (nodes.filter { it.released }.lastOrNull()?.sequenceId) ?: lastNodeSequenceId
         if (stitch.sequenceId != knownBase) {
-            reject("orderUpdateError", "update ${order.orderUpdateId} of $orderId starts at sequence ${stitch.sequenceId}, the base ends at $knownBase")
+            reject(
+                "orderUpdateError",
+                "update ${order.orderUpdateId} of $orderId starts at sequence ${stitch.sequenceId}, the base ends at $knownBase",
+            )
             return
         }
         orderUpdateId = order.orderUpdateId
@@ -183,11 +205,21 @@ class SimulatedVehicle(
             var status = Vda.FINISHED
             when (action.actionType) {
                 Vda.CANCEL_ORDER -> cancel()
+
                 Vda.START_PAUSE -> paused = true
+
                 Vda.STOP_PAUSE -> paused = false
+
                 Vda.INIT_POSITION -> initPosition(action)
-                Vda.FACTSHEET_REQUEST -> link.publish("$topic/factsheet", SimulatorFactsheet.json(spec).toByteArray(), 0)
+
+                Vda.FACTSHEET_REQUEST -> link.publish(
+                    "$topic/factsheet",
+                    SimulatorFactsheet.json(spec).toByteArray(),
+                    0,
+                )
+
                 Vda.STATE_REQUEST -> Unit
+
                 else -> status = Vda.FAILED
             }
             actionStates[action.actionId] = ActionState(action.actionId, status, action.actionType)
@@ -199,7 +231,9 @@ class SimulatedVehicle(
         nodes.clear()
         edges.clear()
         runningActions.clear()
-        actionStates.replaceAll { _, s -> if (s.actionStatus == Vda.FINISHED || s.actionStatus == Vda.FAILED) s else s.copy(actionStatus = Vda.FAILED) }
+        actionStates.replaceAll { _, s ->
+            if (s.actionStatus == Vda.FINISHED || s.actionStatus == Vda.FAILED) s else s.copy(actionStatus = Vda.FAILED)
+        }
     }
 
     private fun initPosition(action: Action) {
@@ -303,15 +337,30 @@ class SimulatedVehicle(
     private fun publishVisualization(now: Long) {
         lastVisualization = now
         val message = Visualization(
-            next("visualization"), Instant.now().toString(), Vda.PROTOCOL_VERSION, spec.manufacturer, spec.serialNumber,
+            next("visualization"),
+            Instant.now().toString(),
+            Vda.PROTOCOL_VERSION,
+            spec.manufacturer,
+            spec.serialNumber,
             AgvPosition(x, y, theta, spec.mapId, positionInitialized = true),
         )
-        link.publish("$topic/visualization", Vda5050Json.encodeToString(Visualization.serializer(), message).toByteArray(), 0)
+        link.publish(
+            "$topic/visualization",
+            Vda5050Json.encodeToString(Visualization.serializer(), message).toByteArray(),
+            0,
+        )
     }
 
     private fun connectionJson(state: String, headerId: Long): ByteArray = Vda5050Json.encodeToString(
         Connection.serializer(),
-        Connection(headerId, Instant.now().toString(), Vda.PROTOCOL_VERSION, spec.manufacturer, spec.serialNumber, state),
+        Connection(
+            headerId,
+            Instant.now().toString(),
+            Vda.PROTOCOL_VERSION,
+            spec.manufacturer,
+            spec.serialNumber,
+            state,
+        ),
     ).toByteArray()
 
     private fun distanceTo(node: Node): Double = node.nodePosition?.let { hypot(it.x - x, it.y - y) } ?: 0.0

@@ -34,12 +34,30 @@ data class SimulatorOptions(
             while (i < args.size) {
                 options = when (val arg = args[i]) {
                     "--vehicles" -> options.copy(vehicles = value().toIntOrNull()?.takeIf { it > 0 } ?: bad(arg))
+
                     "--broker" -> options.copy(broker = value())
+
                     "--model" -> options.copy(model = Path.of(value()))
-                    "--time-factor" -> options.copy(timeFactor = value().toDoubleOrNull()?.takeIf { it > 0 } ?: bad(arg))
-                    "--state-interval" -> options.copy(stateIntervalMillis = value().toLongOrNull()?.takeIf { it > 0 } ?: bad(arg))
+
+                    "--time-factor" -> options.copy(
+                        timeFactor = value().toDoubleOrNull()?.takeIf {
+                            it > 0
+                        } ?: bad(arg),
+                    )
+
+                    "--state-interval" -> options.copy(
+                        stateIntervalMillis = value().toLongOrNull()?.takeIf {
+                            it > 0
+                        } ?: bad(arg),
+                    )
+
                     "--visualization-interval" ->
-                        options.copy(visualizationIntervalMillis = value().toLongOrNull()?.takeIf { it > 0 } ?: bad(arg))
+                        options.copy(
+                            visualizationIntervalMillis = value().toLongOrNull()?.takeIf {
+                                it > 0
+                            } ?: bad(arg),
+                        )
+
                     else -> throw IllegalArgumentException("unknown option '$arg'")
                 }
                 i++
@@ -86,8 +104,8 @@ fun simulatedVehicles(model: PlantModel, options: SimulatorOptions): List<Simula
 }
 
 /** The VDA 5050 demo plant in this module's resources. */
-fun vda5050DemoModel(): PlantModel {
-    return SimulatedVehicle::class.java.getResourceAsStream(DEMO)!!.use { PlantModelFiles.read(it, "VDA 5050 demo plant") }
+fun vda5050DemoModel(): PlantModel = SimulatedVehicle::class.java.getResourceAsStream(DEMO)!!.use {
+    PlantModelFiles.read(it, "VDA 5050 demo plant")
 }
 
 private const val DEMO = "/org/ktcs/adapters/vda5050/demo/vda5050-demo.xml"

@@ -55,7 +55,14 @@ internal object SimulatorFactsheet {
                         },
                     )
                 }
-                listOf(Vda.CANCEL_ORDER, Vda.START_PAUSE, Vda.STOP_PAUSE, Vda.INIT_POSITION, Vda.STATE_REQUEST, Vda.FACTSHEET_REQUEST)
+                listOf(
+                    Vda.CANCEL_ORDER,
+                    Vda.START_PAUSE,
+                    Vda.STOP_PAUSE,
+                    Vda.INIT_POSITION,
+                    Vda.STATE_REQUEST,
+                    Vda.FACTSHEET_REQUEST,
+                )
                     .forEach { type ->
                         add(
                             buildJsonObject {
