@@ -16,6 +16,7 @@ class EmbeddedBroker(private val bindAddress: String, private val port: Int) : A
     private var broker: EmbeddedHiveMQ? = null
 
     fun start() {
+        checkPortFree()
         val config = Files.createDirectories(home.resolve("conf"))
         Files.writeString(config.resolve("config.xml"), configXml())
         val started = EmbeddedHiveMQ.builder()
@@ -29,12 +30,26 @@ class EmbeddedBroker(private val bindAddress: String, private val port: Int) : A
         } catch (error: java.util.concurrent.ExecutionException) {
             runCatching { started.close() }
             throw IllegalStateException(
-                "the embedded MQTT broker could not listen on $bindAddress:$port: ${error.cause?.message}",
+                "the embedded MQTT broker could not start on $bindAddress:$port: " +
+                    (error.cause?.message ?: error.cause?.javaClass?.simpleName),
                 error.cause,
             )
         }
         broker = started
         log.info("embedded MQTT broker listening on {}:{}", bindAddress, port)
+    }
+
+    /** HiveMQ reports a taken port only in its log: say it here, with what to change. */
+    private fun checkPortFree() {
+        try {
+            java.net.ServerSocket(port, 1, java.net.InetAddress.getByName(bindAddress)).close()
+        } catch (error: java.io.IOException) {
+            throw IllegalStateException(
+                "the embedded MQTT broker cannot listen on $bindAddress:$port (${error.message}); set " +
+                    "vda5050.embeddedBroker.port (or vda5050.brokerUrl for an external broker)",
+                error,
+            )
+        }
     }
 
     override fun close() {
