@@ -70,7 +70,7 @@ class Vda5050Driver(
         subscribe(mqtt, properties.state.name, properties.state.qos, IncomingTopic.STATE)
         subscribe(mqtt, properties.visualization.name, properties.visualization.qos, IncomingTopic.VISUALIZATION)
         subscribe(mqtt, properties.factsheet.name, properties.factsheet.qos, IncomingTopic.FACTSHEET)
-        log.info("vehicle {} listens on {}/#", vehicleName, properties.topicPrefix)
+        log.debug("vehicle {} listens on {}/#", vehicleName, properties.topicPrefix)
     }
 
     override fun onDisabled() {

@@ -27,13 +27,14 @@ import kotlin.system.exitProcess
 data class Vda5050BenchOptions(
     val vehicles: Int = 100,
     val orders: Int = 200,
-    val grid: Int = 20,
+    /** The grid's side; by default as dense as issue #11's 20x20 grid with 30 vehicles. */
+    val grid: Int? = null,
     val timeFactor: Double = 4.0,
     val timeoutSeconds: Long = 900,
 ) {
     companion object {
         const val USAGE = """usage: ktcs vda5050-bench [--vehicles N] [--orders M] [--grid G] [--time-factor F] [--timeout S]
-  Starts ./ktcs twice on a generated GxG traffic grid with N vehicles and posts the same M orders: once with VDA 5050
+  Starts ./ktcs twice on a generated GxG traffic grid (default: as dense as 30 vehicles on 20x20) with N vehicles and posts the same M orders: once with VDA 5050
   vehicles played by the simulator over the embedded broker (state 1 Hz, visualization 10 Hz), once with loopback
   vehicles. Prints the orders finished, kTCS's CPU seconds per finished order in both runs and their ratio, and the
   broker round trip (publish to receive, QoS 0) p50/p99 measured every 100 ms during the VDA 5050 run."""
@@ -78,12 +79,13 @@ data class RunFigures(val finished: Int, val failed: Int, val cpuSeconds: Double
  */
 class Vda5050Bench(private val options: Vda5050BenchOptions, private val launcher: Path) {
     private val work = Files.createTempDirectory("ktcs-vda5050-bench")
-    private val plant = Fleet.withVehicles(GridPlant(options.grid, options.grid).build(), options.vehicles)
+    private val side = options.grid ?: maxOf(MIN_GRID, Math.ceil(Math.sqrt(options.vehicles / GRID_DENSITY)).toInt())
+    private val plant = Fleet.withVehicles(GridPlant(side, side).build(), options.vehicles)
     private val orders = BenchOrders(plant, SEED).next("B", options.orders)
 
     fun run() {
         println(
-            "vda5050-bench: ${options.vehicles} vehicles, ${options.orders} orders, ${options.grid}x${options.grid} grid, time factor ${options.timeFactor}",
+            "vda5050-bench: ${options.vehicles} vehicles, ${options.orders} orders, ${side}x$side grid, time factor ${options.timeFactor}",
         )
         val (vda, roundTrips) = vdaRun()
         println(line("VDA 5050", vda))
@@ -221,6 +223,8 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
 
     private companion object {
         const val SEED = 42L
+        const val MIN_GRID = 10
+        const val GRID_DENSITY = 30.0 / (20 * 20)
         const val READY_SECONDS = 120L
         const val POLL_MILLIS = 1000L
         const val NANOS_PER_SECOND = 1e9
