@@ -55,7 +55,9 @@ class Vda5050Driver(
     @Volatile private var lastVisualizationMillis = 0L
     private var factsheet: JsonObject? = null
     private var reportedErrors: Set<String> = emptySet()
-    private var pendingCancel: String? = null
+    private var pendingCancel: Action? = null
+    private var cancelSentAt = 0L
+    private var orderSentAt = 0L
     private val deferred = ArrayDeque<MovementCommand>()
     private var rejections = 0
 
@@ -112,7 +114,8 @@ class Vda5050Driver(
         if (order == null) return
         order = null
         val cancel = Action(Vda.CANCEL_ORDER, actions.newId(), "NONE")
-        pendingCancel = cancel.actionId
+        pendingCancel = cancel
+        cancelSentAt = System.currentTimeMillis()
         sendInstantActions(listOf(cancel))
     }
 
@@ -196,6 +199,7 @@ class Vda5050Driver(
         context.plantModel.point(point)?.properties?.get("vda5050:mapId") ?: properties.mapId ?: defaultMapId
 
     private fun publishOrder(update: OrderUpdate) {
+        orderSentAt = System.currentTimeMillis()
         val message = Order(
             nextHeader("order"), timestamp(), Vda.PROTOCOL_VERSION, properties.manufacturer, properties.serialNumber,
             update.orderId, update.orderUpdateId, update.nodes, update.edges,
@@ -344,7 +348,10 @@ class Vda5050Driver(
             failOrder("the vehicle reported an error: ${describe(fatal)}")
             return
         }
-        order?.let { current -> if (state.orderId == current.orderId) progress(current, state) }
+        order?.let { current ->
+            if (state.orderId == current.orderId) progress(current, state)
+            resendIfLost(current, state)
+        }
     }
 
     private fun progress(current: OrderTracker, state: State) {
@@ -372,9 +379,27 @@ class Vda5050Driver(
         if (current.unacknowledged == null) deferred.removeFirstOrNull()?.let(::release)
     }
 
+    /**
+     * The order topic is QoS 0 by default (openTCS's): an update the vehicle's state does not reflect a while after
+     * it was sent is sent again (the vehicle ignores an update it already has).
+     */
+    private fun resendIfLost(current: OrderTracker, state: State) {
+        val waiting = current.unacknowledged ?: return
+        val reflected = state.orderId == waiting.orderId && state.orderUpdateId >= waiting.orderUpdateId
+        if (!reflected && System.currentTimeMillis() - orderSentAt >= RESEND_MILLIS) publishOrder(waiting)
+    }
+
     private fun checkCancel(state: State) {
-        val id = pendingCancel ?: return
-        val status = state.actionStates.firstOrNull { it.actionId == id }?.actionStatus ?: return
+        val cancel = pendingCancel ?: return
+        val status = state.actionStates.firstOrNull { it.actionId == cancel.actionId }?.actionStatus
+        if (status == null) {
+            // Not reflected yet: lost on the way (QoS 0), so it goes again, as openTCS's driver does.
+            if (System.currentTimeMillis() - cancelSentAt >= RESEND_MILLIS) {
+                cancelSentAt = System.currentTimeMillis()
+                sendInstantActions(listOf(cancel))
+            }
+            return
+        }
         if (status == Vda.FINISHED || status == Vda.FAILED) {
             pendingCancel = null
             deferred.removeFirstOrNull()?.let(::release)
@@ -448,6 +473,7 @@ class Vda5050Driver(
         const val FAILURE_PROPERTY = "vda5050:failureReason"
         private const val MM_PER_M = 1000.0
         private const val MAX_PROBLEMS_LOGGED = 5
+        private const val RESEND_MILLIS = 2000L
         private const val KEEPS_RESOURCES = "; it keeps its allocated resources, as it is still physically there"
     }
 }
