@@ -16,6 +16,8 @@ include(
     "adapters-loopback",
     "web-overview",
     "xml-channels",
+    "adapters-vda5050",
+    "vda5050-tools",
     "examples:tcp-vehicle-driver",
     "examples:nearest-vehicle-dispatcher",
     "examples:overview-panel-theme",

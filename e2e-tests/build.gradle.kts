@@ -7,6 +7,7 @@ dependencies {
     testImplementation(project(":adapters-loopback"))
     testImplementation(project(":web-overview"))
     testImplementation(project(":xml-channels"))
+    testImplementation(project(":adapters-vda5050"))
     testImplementation(project(":examples:tcp-vehicle-driver"))
     testImplementation(project(":examples:overview-panel-theme"))
     testImplementation(libs.playwright)

@@ -7,7 +7,9 @@ import io.kotest.matchers.shouldBe
 
 /**
  * Extensions build on the contract (`api`, `extension-api`), not on the kernel: no module's main class path may reach
- * `kernel`, directly or through another module (tests may use it). The Gradle files mirror the poms
+ * `kernel`, directly or through another module (tests may use it; `provided` counts: the code compiles against it).
+ * The exception are [TOOLS]: command-line tools run beside kTCS that read plant-model files and drive a kernel from
+ * outside (a simulator, a benchmark), which no extension depends on. The Gradle files mirror the poms
  * ([BuildFilesAgreeTest]), so checking the poms checks both builds.
  */
 class ModuleGraphTest : FunSpec({
@@ -55,6 +57,11 @@ class ModuleGraphTest : FunSpec({
                 listOf("driver -> :kernel", "panel -> :driver -> :kernel")
         }
 
+        test("a module that compiles against the kernel as a provided dependency") {
+            kernelOnMainClassPath(build(arrayOf("kernel" to "provided"), "spi" to "compile")) shouldBe
+                listOf("driver -> :kernel")
+        }
+
         test("nothing when the kernel is a test dependency only") {
             kernelOnMainClassPath(build(arrayOf("spi" to "compile", "kernel" to "test"), "driver" to "compile"))
                 .shouldBeEmpty()
@@ -63,12 +70,12 @@ class ModuleGraphTest : FunSpec({
 })
 
 /** Each module (other than the kernel) whose compile or runtime dependencies reach the kernel, with the path. */
-private fun kernelOnMainClassPath(build: MavenBuild): List<String> = build.modules.filter { it != KERNEL }
+private fun kernelOnMainClassPath(build: MavenBuild): List<String> = build.modules.filter { it != KERNEL && it !in TOOLS }
     .mapNotNull { module -> pathToKernel(build, module, listOf(module))?.joinToString(" -> ") }
 
 private fun pathToKernel(build: MavenBuild, module: String, path: List<String>): List<String>? =
     build.dependencies(module)
-        .filter { it.scope == "compile" || it.scope == "runtime" }
+        .filter { it.scope == "compile" || it.scope == "runtime" || it.scope == "provided" }
         .map { it.module }
         .filter { it.startsWith(":") && it !in path }
         .firstNotNullOfOrNull { dependency ->
@@ -80,5 +87,7 @@ private fun pathToKernel(build: MavenBuild, module: String, path: List<String>):
         }
 
 private const val KERNEL = "kernel"
+
+private val TOOLS = setOf("vda5050-tools")
 
 private val FRAMEWORKS = Regex("^(io\\.ktor|io\\.insert-koin|com\\.fasterxml\\.jackson)")

@@ -70,6 +70,13 @@ public interface VehicleDriverFactory {
     /** Whether this factory can create a driver for the vehicle named [vehicleName] in the current model. */
     public fun canDrive(vehicleName: String, context: DriverContext): Boolean = true
 
+    /**
+     * Whether this factory should drive the vehicle named [vehicleName] when its `tcs:preferredAdapterClass` names no
+     * available driver, e.g. because the vehicle's own properties say what it speaks (`vda5050:version`). The first
+     * factory that claims a vehicle wins over the first one that merely can drive it.
+     */
+    public fun claims(vehicleName: String, context: DriverContext): Boolean = false
+
     /** Creates a driver for the vehicle named [vehicleName]; it starts disabled. */
     public fun create(vehicleName: String, context: DriverContext): VehicleDriver
 

@@ -13,7 +13,8 @@ import org.slf4j.LoggerFactory
 
 /**
  * One controller per vehicle, and the drivers attached to them. A vehicle gets the driver its property
- * `tcs:preferredAdapterClass` names (a factory's name or class name), else the first factory that can drive it.
+ * `tcs:preferredAdapterClass` names (a factory's name or class name), else the first factory that claims it (e.g. from
+ * the vehicle's own properties), else the first factory that can drive it.
  * Confined to the kernel context.
  */
 class VehicleControllers(private val env: VehicleEnvironment, private val factories: List<VehicleDriverFactory>) {
@@ -164,6 +165,7 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
         val preferred = env.plant.vehicle(vehicle).properties[PREFERRED_DRIVER]
         val candidates = available(vehicle)
         return candidates.firstOrNull { preferred != null && (it.name == preferred || it.javaClass.name == preferred) }
+            ?: candidates.firstOrNull { it.claims(vehicle, contexts.getValue(vehicle)) }
             ?: candidates.firstOrNull()
     }
 

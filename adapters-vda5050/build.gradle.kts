@@ -1,0 +1,15 @@
+plugins {
+    id("ktcs.kotlin-jvm")
+}
+
+dependencies {
+    compileOnly(project(":extension-api"))
+    compileOnly(libs.kotlinx.serialization.json)
+    implementation(libs.hivemq.mqtt.client)
+    implementation(libs.hivemq.community.edition.embedded)
+    implementation(libs.jctools.core)
+    implementation(libs.json.schema.validator)
+
+    testImplementation(project(":kernel"))
+    testImplementation(project(":adapters-loopback"))
+}

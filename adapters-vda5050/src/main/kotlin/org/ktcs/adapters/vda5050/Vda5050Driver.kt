@@ -1,0 +1,479 @@
+package org.ktcs.adapters.vda5050
+
+import kotlinx.serialization.SerializationException
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
+import org.ktcs.adapters.vda5050.mqtt.MqttLink
+import org.ktcs.adapters.vda5050.protocol.Action
+import org.ktcs.adapters.vda5050.protocol.ActionParameter
+import org.ktcs.adapters.vda5050.protocol.Connection
+import org.ktcs.adapters.vda5050.protocol.IncomingTopic
+import org.ktcs.adapters.vda5050.protocol.InstantActions
+import org.ktcs.adapters.vda5050.protocol.MessageValidator
+import org.ktcs.adapters.vda5050.protocol.Order
+import org.ktcs.adapters.vda5050.protocol.State
+import org.ktcs.adapters.vda5050.protocol.Vda
+import org.ktcs.adapters.vda5050.protocol.Vda5050Json
+import org.ktcs.adapters.vda5050.protocol.Visualization
+import org.ktcs.api.driver.BasicVehicleDriver
+import org.ktcs.api.driver.DriverContext
+import org.ktcs.api.driver.DriverMessage
+import org.ktcs.api.driver.MovementCommand
+import org.ktcs.api.event.NotificationLevel
+import org.ktcs.api.kernel.Explained
+import org.ktcs.api.model.LoadHandlingDevice
+import org.ktcs.api.model.Position
+import org.ktcs.api.model.VehicleState
+import org.ktcs.api.order.TransportOrder
+import org.slf4j.LoggerFactory
+import java.time.Instant
+import java.time.format.DateTimeFormatter
+
+/**
+ * Drives one VDA 5050 vehicle over MQTT. The scheduler's allocated steps (the commands [BasicVehicleDriver] holds,
+ * up to `vda5050:maxStepsBase`) form the order's base, the rest of the route its horizon; every newly allocated step
+ * is an order update. `state` messages finish the commands whose edge and node the vehicle no longer reports (and
+ * whose actions finished). Messages arrive on the MQTT client's threads: they are validated and parsed there and
+ * handled in the kernel context.
+ */
+class Vda5050Driver(
+    vehicleName: String,
+    context: DriverContext,
+    private val properties: Vda5050Properties,
+    private val link: () -> MqttLink,
+    private val defaultMapId: String,
+) : BasicVehicleDriver(vehicleName, context, properties.maxStepsBase, properties.rechargeOperation) {
+    private val log = LoggerFactory.getLogger(Vda5050Driver::class.java)
+    private val actions = ActionMapping(properties, context.vehicle().properties)
+    private val headerIds = HashMap<String, Long>()
+    private var orderCount = 0
+    private var order: OrderTracker? = null
+    private var connectionState = "UNKNOWN"
+    private var lastState: State? = null
+    private var lastStateAt: Instant? = null
+
+    @Volatile private var lastVisualizationMillis = 0L
+    private var factsheet: JsonObject? = null
+    private var reportedErrors: Set<String> = emptySet()
+    private var pendingCancel: Action? = null
+    private var cancelSentAt = 0L
+    private var orderSentAt = 0L
+    private val deferred = ArrayDeque<MovementCommand>()
+    private var rejections = 0
+
+    override fun onEnabled() {
+        val mqtt = link()
+        subscribe(
+            mqtt,
+            properties.connection.name,
+            properties.connection.qos.coerceAtLeast(1),
+            IncomingTopic.CONNECTION,
+        )
+        subscribe(mqtt, properties.state.name, properties.state.qos, IncomingTopic.STATE)
+        subscribe(mqtt, properties.visualization.name, properties.visualization.qos, IncomingTopic.VISUALIZATION)
+        subscribe(mqtt, properties.factsheet.name, properties.factsheet.qos, IncomingTopic.FACTSHEET)
+        log.debug("vehicle {} listens on {}/#", vehicleName, properties.topicPrefix)
+    }
+
+    override fun onDisabled() {
+        val mqtt = link()
+        listOf(properties.connection, properties.state, properties.visualization, properties.factsheet)
+            .forEach { mqtt.unsubscribe(properties.topic(it)) }
+        order = null
+        deferred.clear()
+    }
+
+    override fun canProcess(order: TransportOrder): Explained = when {
+        connectionState != Vda.ONLINE -> Explained.no("vehicle $vehicleName is $connectionState")
+        else -> Explained.YES
+    }
+
+    override fun sendCommand(command: MovementCommand) {
+        if (pendingCancel != null || order?.unacknowledged != null) {
+            deferred.addLast(command) // sent once the vehicle confirmed the cancellation or the previous update
+            return
+        }
+        release(command)
+    }
+
+    private fun release(command: MovementCommand) {
+        val current = order?.takeIf { it.orderId.startsWith("${orderPrefix(command)}-") }
+            ?: OrderTracker("${orderPrefix(command)}-${++orderCount}", { context.plantModel }, ::mapIdOf, actions)
+                .also { order = it }
+        val start = context.vehicle().currentPosition ?: command.step.sourcePoint ?: command.step.destinationPoint
+        publishOrder(current.extend(command, start, horizonAfter(command)))
+    }
+
+    private fun orderPrefix(command: MovementCommand) = "${command.transportOrder}/${command.driveOrder}"
+
+    override fun onCommandQueueCleared() = cancelOrder()
+
+    /** Drops the vehicle's order: cancelOrder, and no new order until the vehicle has confirmed it. */
+    private fun cancelOrder() {
+        deferred.clear()
+        if (order == null) return
+        order = null
+        val cancel = Action(Vda.CANCEL_ORDER, actions.newId(), "NONE")
+        pendingCancel = cancel
+        cancelSentAt = System.currentTimeMillis()
+        sendInstantActions(listOf(cancel))
+    }
+
+    override fun onPaused(paused: Boolean) =
+        sendInstantActions(listOf(Action(if (paused) Vda.START_PAUSE else Vda.STOP_PAUSE, actions.newId(), "NONE")))
+
+    override fun processMessage(message: DriverMessage) {
+        val action = when (message.type) {
+            INIT_POSITION -> initPosition(
+                message.parameters["point"] ?: throw IllegalArgumentException("parameter 'point' is missing"),
+            )
+
+            STATE_REQUEST -> Action(Vda.STATE_REQUEST, actions.newId(), "NONE")
+
+            FACTSHEET_REQUEST -> Action(Vda.FACTSHEET_REQUEST, actions.newId(), "NONE")
+
+            START_PAUSE -> Action(Vda.START_PAUSE, actions.newId(), "NONE")
+
+            STOP_PAUSE -> Action(Vda.STOP_PAUSE, actions.newId(), "NONE")
+
+            else -> throw IllegalArgumentException("unknown message type '${message.type}'")
+        }
+        sendInstantActions(listOf(action))
+    }
+
+    override fun panelState(): Map<String, String> = buildMap {
+        put("connection", connectionState)
+        put("lastStateAt", lastStateAt?.toString() ?: "")
+        put(
+            "stateAgeMillis",
+            lastStateAt?.let {
+                (context.clock.now().toEpochMilli() - it.toEpochMilli()).toString()
+            }.orEmpty(),
+        )
+        put("errors", lastState?.errors?.joinToString("; ") { describe(it) }.orEmpty())
+        put("orderId", order?.orderId ?: lastState?.orderId.orEmpty())
+        put("orderUpdateId", lastState?.orderUpdateId?.toString().orEmpty())
+        put("topicPrefix", properties.topicPrefix)
+        put("factsheet", factsheet?.toString().orEmpty())
+    }
+
+    private fun initPosition(point: String): Action {
+        val p = context.plantModel.point(point) ?: throw IllegalArgumentException("unknown point '$point'")
+        val theta = p.pose.orientationAngle.takeIf { !it.isNaN() }?.let(Math::toRadians) ?: 0.0
+        val parameters = listOf(
+            ActionParameter("x", JsonPrimitive(p.pose.position.x / MM_PER_M)),
+            ActionParameter("y", JsonPrimitive(p.pose.position.y / MM_PER_M)),
+            ActionParameter("theta", JsonPrimitive(theta)),
+            ActionParameter("mapId", JsonPrimitive(mapIdOf(point))),
+            ActionParameter("lastNodeId", JsonPrimitive(point)),
+        )
+        return Action(Vda.INIT_POSITION, actions.newId(), "HARD", parameters)
+    }
+
+    /** The points and paths of the route after [command] that the scheduler has not allocated yet, as (path, point). */
+    private fun horizonAfter(command: MovementCommand): List<Pair<String?, String>> {
+        val model = context.plantModel
+        val claimed = context.vehicle().claimedResources
+        val start = claimed.indexOfFirst { command.step.path != null && command.step.path in it } + 1
+        val steps = claimed.drop(start).map { set ->
+            val path = set.firstOrNull { model.path(it) != null }
+            path to set.firstOrNull { model.point(it) != null }
+        }
+        val limit = minOf(properties.maxStepsHorizon, factsheetLimit("order.nodes"))
+        var last = command.step.destinationPoint
+        return steps.mapNotNull { (path, point) ->
+            val p = path?.let(model::path) ?: return@mapNotNull null
+            val next = point ?: if (p.sourcePoint == last) p.destinationPoint else p.sourcePoint
+            last = next
+            path to next
+        }.take(limit)
+    }
+
+    private fun factsheetLimit(array: String): Int = runCatching {
+        val lens = (factsheet?.get("protocolLimits") as? JsonObject)?.get("maxArrayLens") as? JsonObject
+        val nodes = (lens?.get(array) as? JsonPrimitive)?.content?.toInt()
+        nodes?.let { (it - properties.maxStepsBase - 1).coerceAtLeast(0) }
+    }.getOrNull() ?: Int.MAX_VALUE
+
+    private fun mapIdOf(point: String): String =
+        context.plantModel.point(point)?.properties?.get("vda5050:mapId") ?: properties.mapId ?: defaultMapId
+
+    private fun publishOrder(update: OrderUpdate) {
+        orderSentAt = System.currentTimeMillis()
+        val message = Order(
+            nextHeader("order"), timestamp(), Vda.PROTOCOL_VERSION, properties.manufacturer, properties.serialNumber,
+            update.orderId, update.orderUpdateId, update.nodes, update.edges,
+        )
+        publish(properties.order.name, properties.order.qos, Vda5050Json.encodeToString(Order.serializer(), message))
+        log.debug("vehicle {}: order {} update {}", vehicleName, update.orderId, update.orderUpdateId)
+    }
+
+    private fun sendInstantActions(list: List<Action>) {
+        val message = InstantActions(
+            nextHeader("instantActions"),
+            timestamp(),
+            Vda.PROTOCOL_VERSION,
+            properties.manufacturer,
+            properties.serialNumber,
+            list,
+        )
+        publish(
+            properties.instantActions.name,
+            properties.instantActions.qos,
+            Vda5050Json.encodeToString(InstantActions.serializer(), message),
+        )
+    }
+
+    private fun publish(topic: String, qos: Int, json: String) {
+        link().publish("${properties.topicPrefix}/$topic", json.toByteArray(), qos)
+    }
+
+    private fun subscribe(mqtt: MqttLink, topic: String, qos: Int, kind: IncomingTopic) {
+        mqtt.subscribe("${properties.topicPrefix}/$topic", qos) { payload -> received(kind, payload) }
+    }
+
+    /** On the MQTT client's thread: validate and parse, then handle in the kernel context. */
+    private fun received(kind: IncomingTopic, payload: ByteArray) {
+        // Most traffic is visualization (10 Hz per vehicle): what the interval drops is neither validated nor parsed.
+        if (kind == IncomingTopic.VISUALIZATION && !visualizationDue()) return
+        val json = String(payload, Charsets.UTF_8)
+        if (properties.validateIncomingMessages) {
+            val problems = MessageValidator.problems(kind, json)
+            if (problems.isNotEmpty()) {
+                log.warn(
+                    "vehicle {}: dropped an invalid {} message: {}",
+                    vehicleName,
+                    kind.name.lowercase(),
+                    problems.take(MAX_PROBLEMS_LOGGED).joinToString("; "),
+                )
+                return
+            }
+        }
+        try {
+            when (kind) {
+                IncomingTopic.STATE -> {
+                    val state = Vda5050Json.decodeFromString(State.serializer(), json)
+                    inKernel { onState(state) }
+                }
+
+                IncomingTopic.CONNECTION -> {
+                    val connection = Vda5050Json.decodeFromString(Connection.serializer(), json)
+                    inKernel { onConnection(connection) }
+                }
+
+                IncomingTopic.VISUALIZATION ->
+                    onVisualization(Vda5050Json.decodeFromString(Visualization.serializer(), json))
+
+                IncomingTopic.FACTSHEET -> {
+                    val sheet = Vda5050Json.parseToJsonElement(json) as? JsonObject
+                    inKernel { factsheet = sheet }
+                }
+            }
+        } catch (error: SerializationException) {
+            unreadable(kind, error)
+        } catch (error: IllegalArgumentException) {
+            unreadable(kind, error)
+        }
+    }
+
+    private fun unreadable(kind: IncomingTopic, error: Exception) {
+        log.warn("vehicle {}: dropped an unreadable {} message: {}", vehicleName, kind.name.lowercase(), error.message)
+    }
+
+    private fun inKernel(action: () -> Unit) = context.clock.schedule(0) {
+        if (isEnabled) action()
+    }
+
+    private fun onConnection(message: Connection) {
+        val previous = connectionState
+        connectionState = message.connectionState
+        if (previous == message.connectionState) return
+        when (message.connectionState) {
+            Vda.ONLINE -> {
+                context.reportState(VehicleState.IDLE)
+                if (previous != "UNKNOWN") {
+                    context.notifyUser(NotificationLevel.INFORMATIONAL, "VDA 5050 vehicle $vehicleName is online again")
+                }
+                sendInstantActions(listOf(Action(Vda.STATE_REQUEST, actions.newId(), "NONE"))) // resynchronise
+            }
+
+            else -> {
+                context.reportState(VehicleState.UNKNOWN)
+                val holding = if (pendingCommands.isEmpty()) "" else KEEPS_RESOURCES
+                context.notifyUser(
+                    NotificationLevel.IMPORTANT,
+                    "VDA 5050 vehicle $vehicleName is ${message.connectionState}$holding",
+                )
+            }
+        }
+        context.publishEvent("vda5050:connection", mapOf("state" to message.connectionState))
+    }
+
+    private fun visualizationDue(): Boolean {
+        val now = System.currentTimeMillis()
+        if (now - lastVisualizationMillis < properties.minVisualizationIntervalMillis) return false
+        lastVisualizationMillis = now
+        return true
+    }
+
+    private fun onVisualization(message: Visualization) {
+        message.agvPosition?.let { reportPose(it.x, it.y, it.theta) }
+    }
+
+    private fun onState(state: State) {
+        lastState = state
+        lastStateAt = context.clock.now()
+        if (connectionState != Vda.ONLINE && connectionState == "UNKNOWN") connectionState = Vda.ONLINE
+        if (state.lastNodeId.isNotEmpty() && context.plantModel.point(state.lastNodeId) != null &&
+            context.vehicle().currentPosition != state.lastNodeId
+        ) {
+            context.reportPosition(state.lastNodeId)
+        }
+        state.agvPosition?.let { reportPose(it.x, it.y, it.theta) }
+        context.reportEnergyLevel(state.batteryState.batteryCharge.toInt().coerceIn(0, 100))
+        val devices = state.loads.orEmpty().mapIndexed { i, load ->
+            LoadHandlingDevice(load.loadPosition?.takeIf { it.isNotEmpty() } ?: "LHD-$i", full = true)
+        }
+        if (devices != context.vehicle().loadHandlingDevices) context.reportLoadHandlingDevices(devices)
+        reportProperties(state)
+        context.reportState(vehicleStateOf(state))
+        checkCancel(state)
+        val rejection = state.errors.firstOrNull { it.errorType in Vda.REJECTIONS }
+        if (rejection != null && order != null && ++rejections > properties.maxIgnoredRejections) {
+            failOrder("the vehicle rejected the order: ${describe(rejection)}")
+            return
+        }
+        val fatal = state.errors.firstOrNull { it.errorLevel == Vda.FATAL }
+        if (fatal != null && pendingCommands.isNotEmpty()) {
+            failOrder("the vehicle reported an error: ${describe(fatal)}")
+            return
+        }
+        order?.let { current ->
+            if (state.orderId == current.orderId) progress(current, state)
+            resendIfLost(current, state)
+        }
+    }
+
+    private fun progress(current: OrderTracker, state: State) {
+        current.acknowledge(state.orderUpdateId)
+        val nodes = state.nodeStates.map { it.sequenceId }.toSet()
+        val edges = state.edgeStates.map { it.sequenceId }.toSet()
+        val statuses = state.actionStates.associate { it.actionId to it }
+        for (step in current.sent.toList()) {
+            val final = step.command.finalMovement
+            val edgeDone = step.edge == null || step.edge.sequenceId !in edges
+            val nodeDone = step.node.sequenceId !in nodes
+            val failed = step.actionIds.mapNotNull(statuses::get).firstOrNull { it.actionStatus == Vda.FAILED }
+            if (failed != null) {
+                val reason = failed.resultDescription ?: "no reason given"
+                failOrder("action ${failed.actionType ?: failed.actionId} failed: $reason")
+                return
+            }
+            val actionsDone = step.actionIds.all { statuses[it]?.actionStatus == Vda.FINISHED }
+            val done = edgeDone && actionsDone &&
+                (nodeDone || (properties.completion == CompletionCondition.EDGE && !final))
+            if (!done) break
+            current.completed(step)
+            onCommandExecuted(step.command)
+        }
+        if (current.unacknowledged == null) deferred.removeFirstOrNull()?.let(::release)
+    }
+
+    /**
+     * The order topic is QoS 0 by default (openTCS's): an update the vehicle's state does not reflect a while after
+     * it was sent is sent again (the vehicle ignores an update it already has).
+     */
+    private fun resendIfLost(current: OrderTracker, state: State) {
+        val waiting = current.unacknowledged ?: return
+        val reflected = state.orderId == waiting.orderId && state.orderUpdateId >= waiting.orderUpdateId
+        if (!reflected && System.currentTimeMillis() - orderSentAt >= RESEND_MILLIS) publishOrder(waiting)
+    }
+
+    private fun checkCancel(state: State) {
+        val cancel = pendingCancel ?: return
+        val status = state.actionStates.firstOrNull { it.actionId == cancel.actionId }?.actionStatus
+        if (status == null) {
+            // Not reflected yet: lost on the way (QoS 0), so it goes again, as openTCS's driver does.
+            if (System.currentTimeMillis() - cancelSentAt >= RESEND_MILLIS) {
+                cancelSentAt = System.currentTimeMillis()
+                sendInstantActions(listOf(cancel))
+            }
+            return
+        }
+        if (status == Vda.FINISHED || status == Vda.FAILED) {
+            pendingCancel = null
+            deferred.removeFirstOrNull()?.let(::release)
+        }
+    }
+
+    private fun failOrder(reason: String) {
+        log.warn("vehicle {}: {}", vehicleName, reason)
+        context.setTransportOrderProperty(FAILURE_PROPERTY, reason)
+        context.notifyUser(NotificationLevel.IMPORTANT, "VDA 5050 vehicle $vehicleName: $reason")
+        rejections = 0
+        val failed = pendingCommands.firstOrNull()
+        cancelOrder()
+        failed?.let(::onCommandFailed)
+    }
+
+    private fun reportProperties(state: State) {
+        val errors = state.errors.map { describe(it) }.toSet()
+        (errors - reportedErrors).filter { it.startsWith(Vda.FATAL) }.forEach {
+            context.notifyUser(NotificationLevel.IMPORTANT, "VDA 5050 vehicle $vehicleName reports $it")
+        }
+        if (errors != reportedErrors) {
+            reportedErrors = errors
+            context.setVehicleProperty("vda5050:errors.fatal", errorTypes(state, Vda.FATAL))
+            context.setVehicleProperty("vda5050:errors.warning", errorTypes(state, Vda.WARNING))
+        }
+        val paused = state.paused?.toString()
+        if (context.vehicle().properties["vda5050:paused"] != paused) {
+            context.setVehicleProperty("vda5050:paused", paused)
+        }
+    }
+
+    private fun errorTypes(state: State, level: String): String? =
+        state.errors.filter {
+            it.errorLevel == level
+        }.map { it.errorType }.takeIf { it.isNotEmpty() }?.joinToString(" | ")
+
+    private fun describe(error: org.ktcs.adapters.vda5050.protocol.VehicleError) =
+        "${error.errorLevel} ${error.errorType}${error.errorDescription?.let { ": $it" } ?: ""}"
+
+    private fun vehicleStateOf(state: State): VehicleState = when {
+        state.errors.any { it.errorLevel == Vda.FATAL } -> VehicleState.ERROR
+
+        state.operatingMode != "AUTOMATIC" && state.operatingMode != "SEMIAUTOMATIC" -> VehicleState.UNAVAILABLE
+
+        state.batteryState.charging -> VehicleState.CHARGING
+
+        state.driving || state.nodeStates.isNotEmpty() || state.edgeStates.isNotEmpty() ||
+            state.actionStates.any { it.actionStatus != Vda.FINISHED && it.actionStatus != Vda.FAILED } ->
+            VehicleState.EXECUTING
+
+        else -> VehicleState.IDLE
+    }
+
+    private fun reportPose(x: Double, y: Double, theta: Double) {
+        context.reportPrecisePosition(Position((x * MM_PER_M).toLong(), (y * MM_PER_M).toLong()), Math.toDegrees(theta))
+    }
+
+    private fun nextHeader(topic: String): Long = headerIds.merge(topic, 1L, Long::plus)!! - 1
+
+    private fun timestamp(): String = DateTimeFormatter.ISO_INSTANT.format(Instant.now())
+
+    companion object {
+        const val INIT_POSITION = "vda5050:initPosition"
+        const val STATE_REQUEST = "vda5050:stateRequest"
+        const val FACTSHEET_REQUEST = "vda5050:factsheetRequest"
+        const val START_PAUSE = "vda5050:startPause"
+        const val STOP_PAUSE = "vda5050:stopPause"
+
+        /** The transport-order property that says why the vehicle failed the order. */
+        const val FAILURE_PROPERTY = "vda5050:failureReason"
+        private const val MM_PER_M = 1000.0
+        private const val MAX_PROBLEMS_LOGGED = 5
+        private const val RESEND_MILLIS = 2000L
+        private const val KEEPS_RESOURCES = "; it keeps its allocated resources, as it is still physically there"
+    }
+}

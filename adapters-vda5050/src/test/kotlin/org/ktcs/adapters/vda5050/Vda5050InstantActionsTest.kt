@@ -1,0 +1,87 @@
+package org.ktcs.adapters.vda5050
+
+import io.kotest.assertions.nondeterministic.eventually
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldContain
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.shouldNotBe
+import io.kotest.matchers.string.shouldContain
+import kotlinx.coroutines.delay
+import kotlinx.serialization.json.jsonObject
+import kotlinx.serialization.json.jsonPrimitive
+import org.ktcs.adapters.vda5050.protocol.Vda
+import kotlin.time.Duration.Companion.seconds
+
+/**
+ * Pause and resume, immediate withdrawal (cancelOrder), a schema-invalid message, and a vehicle error mid-order,
+ * with one simulated vehicle over the embedded broker. Slower vehicles (time factor 4) so the test can act mid-way.
+ */
+class Vda5050InstantActionsTest : FunSpec({
+    val plant = VdaPlant(listOf("Point-0001"), timeFactor = 4.0)
+    val notifications = notificationsOf(plant.application.kernel)
+    val driverLog = logLinesOf(Vda5050Driver::class.java.name)
+    afterSpec { plant.close() }
+
+    fun position() = plant.vehicle(0)["precisePosition"]?.toString()
+    fun actionsSent() = plant.instantActions.flatMap { it.actions }.map { it.actionType }
+
+    beforeSpec {
+        eventually(20.seconds) { plant.vehicle(0)["state"]!!.jsonPrimitive.content shouldBe "IDLE" }
+    }
+
+    test("pausing the vehicle sends startPause and it stops; resuming sends stopPause and the order finishes") {
+        plant.order("P1", "Storage 01", "Load cargo")
+        eventually(20.seconds) { plant.vehicle(0)["state"]!!.jsonPrimitive.content shouldBe "EXECUTING" }
+        plant.put("/vehicles/${plant.vehicleName(0)}/paused?newValue=true")
+        eventually(10.seconds) {
+            actionsSent() shouldContain Vda.START_PAUSE
+            plant.vehicle(0)["properties"]!!.jsonObject["vda5050:paused"]!!.jsonPrimitive.content shouldBe "true"
+        }
+        val stoppedAt = position()
+        delay(1500)
+        position() shouldBe stoppedAt
+        plant.orderState("P1") shouldNotBe "FINISHED"
+
+        plant.put("/vehicles/${plant.vehicleName(0)}/paused?newValue=false")
+        eventually(10.seconds) { actionsSent() shouldContain Vda.STOP_PAUSE }
+        eventually(60.seconds) { plant.orderState("P1") shouldBe "FINISHED" }
+    }
+
+    test("an immediate withdrawal sends cancelOrder; the vehicle stops and takes the next order") {
+        plant.order("C1", "Goods out 01", "Unload cargo")
+        eventually(20.seconds) { plant.vehicle(0)["state"]!!.jsonPrimitive.content shouldBe "EXECUTING" }
+        plant.post("/transportOrders/C1/withdrawal?immediate=true")
+        eventually(10.seconds) { actionsSent() shouldContain Vda.CANCEL_ORDER }
+        eventually(10.seconds) { plant.orderState("C1") shouldBe "FAILED" }
+        eventually(10.seconds) { plant.vehicle(0)["state"]!!.jsonPrimitive.content shouldBe "IDLE" }
+
+        plant.order("C2", "Goods out 01", "Unload cargo")
+        eventually(60.seconds) { plant.orderState("C2") shouldBe "FINISHED" }
+    }
+
+    test("a state message that breaks the schema is dropped with a log line naming the problem") {
+        val before = driverLog.size
+        plant.publishRaw("uagv/v2/kTCS/SIM-1/state", """{"headerId":1,"orderId":"x"}""")
+        eventually(10.seconds) {
+            val line = driverLog.drop(before).single { "invalid state message" in it }
+            line shouldContain "required property 'timestamp' not found"
+        }
+        plant.vehicle(0)["state"]!!.jsonPrimitive.content shouldBe "IDLE" // the driver goes on
+    }
+
+    test("a fatal vehicle error mid-order fails the order with the vehicle's reason") {
+        plant.order("E1", "Storage 01", "Load cargo")
+        eventually(20.seconds) { plant.vehicle(0)["state"]!!.jsonPrimitive.content shouldBe "EXECUTING" }
+        plant.vehicles[0].raiseError("motorError", Vda.FATAL, "drive motor overheated")
+        eventually(10.seconds) {
+            plant.orderState("E1") shouldBe "FAILED"
+            plant.vehicle(0)["state"]!!.jsonPrimitive.content shouldBe "ERROR"
+        }
+        val order = plant.get("/transportOrders/E1")
+        order["properties"].toString() shouldContain "drive motor overheated"
+        notifications.any { "drive motor overheated" in it } shouldBe true
+
+        plant.vehicles[0].clearErrors()
+        eventually(10.seconds) { plant.vehicle(0)["state"]!!.jsonPrimitive.content shouldBe "IDLE" }
+    }
+})
