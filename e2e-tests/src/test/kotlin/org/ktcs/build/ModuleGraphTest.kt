@@ -70,7 +70,9 @@ class ModuleGraphTest : FunSpec({
 })
 
 /** Each module (other than the kernel) whose compile or runtime dependencies reach the kernel, with the path. */
-private fun kernelOnMainClassPath(build: MavenBuild): List<String> = build.modules.filter { it != KERNEL && it !in TOOLS }
+private fun kernelOnMainClassPath(
+    build: MavenBuild,
+): List<String> = build.modules.filter { it != KERNEL && it !in TOOLS }
     .mapNotNull { module -> pathToKernel(build, module, listOf(module))?.joinToString(" -> ") }
 
 private fun pathToKernel(build: MavenBuild, module: String, path: List<String>): List<String>? =

@@ -14,8 +14,8 @@ import org.ktcs.kernel.persistence.ModelFileException
 import org.ktcs.kernel.persistence.PublishedModelFile
 import org.ktcs.kernel.simulation.Fleet
 import org.ktcs.kernel.simulation.SimulationRunner
-import org.ktcs.kernel.validation.InvalidModelException
 import org.ktcs.kernel.store.DurableState
+import org.ktcs.kernel.validation.InvalidModelException
 import org.ktcs.kernel.web.KernelVersion
 import java.io.PrintStream
 import java.nio.file.Files
@@ -117,17 +117,17 @@ class Ktcs(private val out: PrintStream, private val err: PrintStream, private v
         out.println(ConfigFile.describe(config, SettingsCatalogue.of(installed.extensions)))
     }
 
-    /**
-     * The extensions on the class path and in `extensions.directory` (required there if set explicitly), and the
-     * configuration, whose keys include the extensions' settings: kTCS's own settings are read first (skipping the
-     * others) to find the extensions, then all of them.
-     */
     /** kTCS's own settings alone (an extension's are not known before the extensions are loaded). */
     private fun ownConfig(options: RunOptions): KtcsConfig {
         val file = options.configFile ?: DEFAULT_CONFIG.takeIf { Files.isRegularFile(it) }
         return ConfigLoader(KtcsSettings.all).load(file, environment, options.overrides, ignoreUnknown = true)
     }
 
+    /**
+     * The extensions on the class path and in `extensions.directory` (required there if set explicitly), and the
+     * configuration, whose keys include the extensions' settings: kTCS's own settings are read first (skipping the
+     * others) to find the extensions, then all of them.
+     */
     private fun configAndExtensions(
         options: RunOptions,
         own: KtcsConfig = ownConfig(options),
