@@ -62,6 +62,18 @@ class ModellingBrowserTest : FunSpec({
         expression: String,
     ): Any? = page().evaluate("() => { const m = window.ktcsOverview.modelling.mode; return $expression; }")
 
+    /**
+     * Waits until the mode just switched to has its draft and has drawn it twice: the side panel it opens resizes the
+     * plant, and a position asked for before that is off by the resize (a loaded machine made a click meant for a
+     * point hit the path beside it).
+     */
+    fun settled() {
+        page().waitForFunction("() => window.ktcsOverview.modelling.mode.draft?.model?.points?.length > 0")
+        page().evaluate(
+            "() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(() => done(null))))",
+        )
+    }
+
     /** Clicks the plant canvas at (x, y) from its top left corner. */
     fun clickPlant(x: Int, y: Int) {
         val box = page().locator(".plant-overlay").boundingBox()
@@ -132,6 +144,7 @@ class ModellingBrowserTest : FunSpec({
     browserTest("every edit undoes and redoes: a move by arrow key, a deletion with the paths at the point") {
         page().locator("#mode-modelling").click()
         page().keyboard().press("s")
+        settled()
         clickElement("point", "Point-0001")
         draft("[...m.selection]") shouldBe listOf("point:Point-0001")
         val x = (draft("m.draft.model.points[0].position.x") as Number).toInt()
