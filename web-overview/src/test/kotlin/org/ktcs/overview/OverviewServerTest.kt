@@ -92,14 +92,24 @@ class OverviewServerTest : FunSpec({
 
     test("an unknown theme name stops ./ktcs with that one line, not wrapped in Koin's definitions") {
         val err = java.io.ByteArrayOutputStream()
-        val args =
-            listOf("--set", "web.port=0", "--set", "web.bindAddress=127.0.0.1", "--set", "overview.vehicleTheme=neon")
+        // Like every start here: its data (state store, log file) in a temporary directory, not in the module's.
+        val data = java.nio.file.Files.createTempDirectory("ktcs-overview-data")
+        val args = listOf(
+            "--set",
+            "web.port=0",
+            "--set",
+            "web.bindAddress=127.0.0.1",
+            "--set",
+            "kernel.dataDirectory=$data",
+        )
+            .plus(listOf("--set", "overview.vehicleTheme=neon"))
         val code = org.ktcs.kernel.app.Ktcs(
             java.io.PrintStream(java.io.OutputStream.nullOutputStream()),
             java.io.PrintStream(err, true),
             emptyMap(),
         )
             .run(args, awaitShutdown = {})
+        data.toFile().deleteRecursively()
         code shouldBe 1
         err.toString().trim() shouldBe "ktcs: error: overview.vehicleTheme: unknown vehicles theme 'neon'; known: " +
             "default-vehicles, high-contrast-vehicles"
