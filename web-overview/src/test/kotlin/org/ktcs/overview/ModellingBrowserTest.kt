@@ -282,6 +282,8 @@ class ModellingBrowserTest : FunSpec({
     }
 
     browserTest("a published model survives a restart of kTCS") {
+        // Left first: a page open on a stopped kTCS tries to reconnect, and the browser logs each refusal as an error.
+        page().navigate("about:blank")
         ktcs!!.close()
         openOverview()
         kernelModel()["name"]!!.jsonPrimitive.content shouldBe "Unnamed model"
