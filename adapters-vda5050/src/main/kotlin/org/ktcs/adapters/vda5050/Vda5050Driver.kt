@@ -1,6 +1,5 @@
 package org.ktcs.adapters.vda5050
 
-import kotlinx.serialization.SerializationException
 import kotlinx.serialization.json.JsonObject
 import kotlinx.serialization.json.JsonPrimitive
 import org.ktcs.adapters.vda5050.mqtt.MqttLink
@@ -8,12 +7,8 @@ import org.ktcs.adapters.vda5050.protocol.Action
 import org.ktcs.adapters.vda5050.protocol.ActionParameter
 import org.ktcs.adapters.vda5050.protocol.Connection
 import org.ktcs.adapters.vda5050.protocol.IncomingTopic
-import org.ktcs.adapters.vda5050.protocol.InstantActions
-import org.ktcs.adapters.vda5050.protocol.MessageValidator
-import org.ktcs.adapters.vda5050.protocol.Order
 import org.ktcs.adapters.vda5050.protocol.State
 import org.ktcs.adapters.vda5050.protocol.Vda
-import org.ktcs.adapters.vda5050.protocol.Vda5050Json
 import org.ktcs.adapters.vda5050.protocol.Visualization
 import org.ktcs.api.driver.BasicVehicleDriver
 import org.ktcs.api.driver.DriverContext
@@ -27,7 +22,6 @@ import org.ktcs.api.model.VehicleState
 import org.ktcs.api.order.TransportOrder
 import org.slf4j.LoggerFactory
 import java.time.Instant
-import java.time.format.DateTimeFormatter
 
 /**
  * Drives one VDA 5050 vehicle over MQTT. The scheduler's allocated steps (the commands [BasicVehicleDriver] holds,
@@ -45,7 +39,7 @@ class Vda5050Driver(
 ) : BasicVehicleDriver(vehicleName, context, properties.maxStepsBase, properties.rechargeOperation) {
     private val log = LoggerFactory.getLogger(Vda5050Driver::class.java)
     private val actions = ActionMapping(properties, context.vehicle().properties)
-    private val headerIds = HashMap<String, Long>()
+    private val topics = VehicleTopics(vehicleName, properties, link)
     private var orderCount = 0
     private var order: OrderTracker? = null
     private var connectionState = "UNKNOWN"
@@ -61,24 +55,13 @@ class Vda5050Driver(
     private val deferred = ArrayDeque<MovementCommand>()
     private var rejections = 0
 
-    override fun onEnabled() {
-        val mqtt = link()
-        subscribe(
-            mqtt,
-            properties.connection.name,
-            properties.connection.qos.coerceAtLeast(1),
-            IncomingTopic.CONNECTION,
-        )
-        subscribe(mqtt, properties.state.name, properties.state.qos, IncomingTopic.STATE)
-        subscribe(mqtt, properties.visualization.name, properties.visualization.qos, IncomingTopic.VISUALIZATION)
-        subscribe(mqtt, properties.factsheet.name, properties.factsheet.qos, IncomingTopic.FACTSHEET)
-        log.debug("vehicle {} listens on {}/#", vehicleName, properties.topicPrefix)
-    }
+    override fun onEnabled() = topics.listen(
+        wanted = { kind -> kind != IncomingTopic.VISUALIZATION || visualizationDue() },
+        received = ::received,
+    )
 
     override fun onDisabled() {
-        val mqtt = link()
-        listOf(properties.connection, properties.state, properties.visualization, properties.factsheet)
-            .forEach { mqtt.unsubscribe(properties.topic(it)) }
+        topics.stopListening()
         order = null
         deferred.clear()
     }
@@ -150,7 +133,7 @@ class Vda5050Driver(
                 (context.clock.now().toEpochMilli() - it.toEpochMilli()).toString()
             }.orEmpty(),
         )
-        put("errors", lastState?.errors?.joinToString("; ") { describe(it) }.orEmpty())
+        put("errors", lastState?.errors?.joinToString("; ") { it.described() }.orEmpty())
         put("orderId", order?.orderId ?: lastState?.orderId.orEmpty())
         put("orderUpdateId", lastState?.orderUpdateId?.toString().orEmpty())
         put("topicPrefix", properties.topicPrefix)
@@ -200,84 +183,19 @@ class Vda5050Driver(
 
     private fun publishOrder(update: OrderUpdate) {
         orderSentAt = System.currentTimeMillis()
-        val message = Order(
-            nextHeader("order"), timestamp(), Vda.PROTOCOL_VERSION, properties.manufacturer, properties.serialNumber,
-            update.orderId, update.orderUpdateId, update.nodes, update.edges,
-        )
-        publish(properties.order.name, properties.order.qos, Vda5050Json.encodeToString(Order.serializer(), message))
-        log.debug("vehicle {}: order {} update {}", vehicleName, update.orderId, update.orderUpdateId)
+        topics.publishOrder(update)
     }
 
-    private fun sendInstantActions(list: List<Action>) {
-        val message = InstantActions(
-            nextHeader("instantActions"),
-            timestamp(),
-            Vda.PROTOCOL_VERSION,
-            properties.manufacturer,
-            properties.serialNumber,
-            list,
-        )
-        publish(
-            properties.instantActions.name,
-            properties.instantActions.qos,
-            Vda5050Json.encodeToString(InstantActions.serializer(), message),
-        )
-    }
+    private fun sendInstantActions(list: List<Action>) = topics.publishInstantActions(list)
 
-    private fun publish(topic: String, qos: Int, json: String) {
-        link().publish("${properties.topicPrefix}/$topic", json.toByteArray(), qos)
-    }
-
-    private fun subscribe(mqtt: MqttLink, topic: String, qos: Int, kind: IncomingTopic) {
-        mqtt.subscribe("${properties.topicPrefix}/$topic", qos) { payload -> received(kind, payload) }
-    }
-
-    /** On the MQTT client's thread: validate and parse, then handle in the kernel context. */
-    private fun received(kind: IncomingTopic, payload: ByteArray) {
-        // Most traffic is visualization (10 Hz per vehicle): what the interval drops is neither validated nor parsed.
-        if (kind == IncomingTopic.VISUALIZATION && !visualizationDue()) return
-        val json = String(payload, Charsets.UTF_8)
-        if (properties.validateIncomingMessages) {
-            val problems = MessageValidator.problems(kind, json)
-            if (problems.isNotEmpty()) {
-                log.warn(
-                    "vehicle {}: dropped an invalid {} message: {}",
-                    vehicleName,
-                    kind.name.lowercase(),
-                    problems.take(MAX_PROBLEMS_LOGGED).joinToString("; "),
-                )
-                return
-            }
+    /** On the MQTT client's thread, a validated and parsed message: handled in the kernel context. */
+    private fun received(message: Any) {
+        when (message) {
+            is State -> inKernel { onState(message) }
+            is Connection -> inKernel { onConnection(message) }
+            is Visualization -> onVisualization(message)
+            is JsonObject -> inKernel { factsheet = message }
         }
-        try {
-            when (kind) {
-                IncomingTopic.STATE -> {
-                    val state = Vda5050Json.decodeFromString(State.serializer(), json)
-                    inKernel { onState(state) }
-                }
-
-                IncomingTopic.CONNECTION -> {
-                    val connection = Vda5050Json.decodeFromString(Connection.serializer(), json)
-                    inKernel { onConnection(connection) }
-                }
-
-                IncomingTopic.VISUALIZATION ->
-                    onVisualization(Vda5050Json.decodeFromString(Visualization.serializer(), json))
-
-                IncomingTopic.FACTSHEET -> {
-                    val sheet = Vda5050Json.parseToJsonElement(json) as? JsonObject
-                    inKernel { factsheet = sheet }
-                }
-            }
-        } catch (error: SerializationException) {
-            unreadable(kind, error)
-        } catch (error: IllegalArgumentException) {
-            unreadable(kind, error)
-        }
-    }
-
-    private fun unreadable(kind: IncomingTopic, error: Exception) {
-        log.warn("vehicle {}: dropped an unreadable {} message: {}", vehicleName, kind.name.lowercase(), error.message)
     }
 
     private fun inKernel(action: () -> Unit) = context.clock.schedule(0) {
@@ -336,16 +254,16 @@ class Vda5050Driver(
         }
         if (devices != context.vehicle().loadHandlingDevices) context.reportLoadHandlingDevices(devices)
         reportProperties(state)
-        context.reportState(vehicleStateOf(state))
+        context.reportState(state.vehicleState())
         checkCancel(state)
         val rejection = state.errors.firstOrNull { it.errorType in Vda.REJECTIONS }
         if (rejection != null && order != null && ++rejections > properties.maxIgnoredRejections) {
-            failOrder("the vehicle rejected the order: ${describe(rejection)}")
+            failOrder("the vehicle rejected the order: ${rejection.described()}")
             return
         }
         val fatal = state.errors.firstOrNull { it.errorLevel == Vda.FATAL }
         if (fatal != null && pendingCommands.isNotEmpty()) {
-            failOrder("the vehicle reported an error: ${describe(fatal)}")
+            failOrder("the vehicle reported an error: ${fatal.described()}")
             return
         }
         order?.let { current ->
@@ -417,14 +335,14 @@ class Vda5050Driver(
     }
 
     private fun reportProperties(state: State) {
-        val errors = state.errors.map { describe(it) }.toSet()
+        val errors = state.errors.map { it.described() }.toSet()
         (errors - reportedErrors).filter { it.startsWith(Vda.FATAL) }.forEach {
             context.notifyUser(NotificationLevel.IMPORTANT, "VDA 5050 vehicle $vehicleName reports $it")
         }
         if (errors != reportedErrors) {
             reportedErrors = errors
-            context.setVehicleProperty("vda5050:errors.fatal", errorTypes(state, Vda.FATAL))
-            context.setVehicleProperty("vda5050:errors.warning", errorTypes(state, Vda.WARNING))
+            context.setVehicleProperty("vda5050:errors.fatal", state.errorTypes(Vda.FATAL))
+            context.setVehicleProperty("vda5050:errors.warning", state.errorTypes(Vda.WARNING))
         }
         val paused = state.paused?.toString()
         if (context.vehicle().properties["vda5050:paused"] != paused) {
@@ -432,35 +350,9 @@ class Vda5050Driver(
         }
     }
 
-    private fun errorTypes(state: State, level: String): String? =
-        state.errors.filter {
-            it.errorLevel == level
-        }.map { it.errorType }.takeIf { it.isNotEmpty() }?.joinToString(" | ")
-
-    private fun describe(error: org.ktcs.adapters.vda5050.protocol.VehicleError) =
-        "${error.errorLevel} ${error.errorType}${error.errorDescription?.let { ": $it" } ?: ""}"
-
-    private fun vehicleStateOf(state: State): VehicleState = when {
-        state.errors.any { it.errorLevel == Vda.FATAL } -> VehicleState.ERROR
-
-        state.operatingMode != "AUTOMATIC" && state.operatingMode != "SEMIAUTOMATIC" -> VehicleState.UNAVAILABLE
-
-        state.batteryState.charging -> VehicleState.CHARGING
-
-        state.driving || state.nodeStates.isNotEmpty() || state.edgeStates.isNotEmpty() ||
-            state.actionStates.any { it.actionStatus != Vda.FINISHED && it.actionStatus != Vda.FAILED } ->
-            VehicleState.EXECUTING
-
-        else -> VehicleState.IDLE
-    }
-
     private fun reportPose(x: Double, y: Double, theta: Double) {
         context.reportPrecisePosition(Position((x * MM_PER_M).toLong(), (y * MM_PER_M).toLong()), Math.toDegrees(theta))
     }
-
-    private fun nextHeader(topic: String): Long = headerIds.merge(topic, 1L, Long::plus)!! - 1
-
-    private fun timestamp(): String = DateTimeFormatter.ISO_INSTANT.format(Instant.now())
 
     companion object {
         const val INIT_POSITION = "vda5050:initPosition"
@@ -472,7 +364,6 @@ class Vda5050Driver(
         /** The transport-order property that says why the vehicle failed the order. */
         const val FAILURE_PROPERTY = "vda5050:failureReason"
         private const val MM_PER_M = 1000.0
-        private const val MAX_PROBLEMS_LOGGED = 5
         private const val RESEND_MILLIS = 2000L
         private const val KEEPS_RESOURCES = "; it keeps its allocated resources, as it is still physically there"
     }

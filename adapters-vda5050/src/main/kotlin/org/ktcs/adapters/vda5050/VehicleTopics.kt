@@ -1,0 +1,131 @@
+package org.ktcs.adapters.vda5050
+
+import kotlinx.serialization.SerializationException
+import kotlinx.serialization.json.JsonObject
+import org.ktcs.adapters.vda5050.mqtt.MqttLink
+import org.ktcs.adapters.vda5050.protocol.Action
+import org.ktcs.adapters.vda5050.protocol.Connection
+import org.ktcs.adapters.vda5050.protocol.IncomingTopic
+import org.ktcs.adapters.vda5050.protocol.InstantActions
+import org.ktcs.adapters.vda5050.protocol.MessageValidator
+import org.ktcs.adapters.vda5050.protocol.Order
+import org.ktcs.adapters.vda5050.protocol.State
+import org.ktcs.adapters.vda5050.protocol.Vda
+import org.ktcs.adapters.vda5050.protocol.Vda5050Json
+import org.ktcs.adapters.vda5050.protocol.Visualization
+import org.slf4j.LoggerFactory
+import java.time.Instant
+import java.time.format.DateTimeFormatter
+
+/**
+ * One VDA 5050 vehicle's topics under its `topicPrefix`: what the master control publishes (orders and instant
+ * actions, with their header ids and timestamps) and what it listens to. An incoming message is validated against
+ * its schema (if `validateIncomingMessages`) and parsed on the MQTT client's thread; an invalid or unreadable one is
+ * logged with the reason and dropped.
+ */
+internal class VehicleTopics(
+    private val vehicleName: String,
+    private val properties: Vda5050Properties,
+    private val link: () -> MqttLink,
+) {
+    // The driver's log category: what a user turns up to watch a vehicle's messages covers these lines too.
+    private val log = LoggerFactory.getLogger(Vda5050Driver::class.java)
+    private val headerIds = HashMap<String, Long>()
+
+    /**
+     * Subscribes to the vehicle's connection, state, visualization and factsheet topics. [wanted] is asked first (a
+     * message it declines is neither validated nor parsed); [received] gets a parsed [Connection], [State],
+     * [Visualization] or factsheet [JsonObject].
+     */
+    fun listen(wanted: (IncomingTopic) -> Boolean, received: (Any) -> Unit) {
+        val mqtt = link()
+        val topics = listOf(
+            Triple(properties.connection.name, properties.connection.qos.coerceAtLeast(1), IncomingTopic.CONNECTION),
+            Triple(properties.state.name, properties.state.qos, IncomingTopic.STATE),
+            Triple(properties.visualization.name, properties.visualization.qos, IncomingTopic.VISUALIZATION),
+            Triple(properties.factsheet.name, properties.factsheet.qos, IncomingTopic.FACTSHEET),
+        )
+        topics.forEach { (topic, qos, kind) ->
+            mqtt.subscribe("${properties.topicPrefix}/$topic", qos) { payload ->
+                if (wanted(kind)) parsed(kind, payload)?.let(received)
+            }
+        }
+        log.debug("vehicle {} listens on {}/#", vehicleName, properties.topicPrefix)
+    }
+
+    fun stopListening() {
+        val mqtt = link()
+        listOf(properties.connection, properties.state, properties.visualization, properties.factsheet)
+            .forEach { mqtt.unsubscribe(properties.topic(it)) }
+    }
+
+    fun publishOrder(update: OrderUpdate) {
+        val message = Order(
+            nextHeader("order"), timestamp(), Vda.PROTOCOL_VERSION, properties.manufacturer, properties.serialNumber,
+            update.orderId, update.orderUpdateId, update.nodes, update.edges,
+        )
+        publish(properties.order.name, properties.order.qos, Vda5050Json.encodeToString(Order.serializer(), message))
+        log.debug("vehicle {}: order {} update {}", vehicleName, update.orderId, update.orderUpdateId)
+    }
+
+    fun publishInstantActions(list: List<Action>) {
+        val message = InstantActions(
+            nextHeader("instantActions"),
+            timestamp(),
+            Vda.PROTOCOL_VERSION,
+            properties.manufacturer,
+            properties.serialNumber,
+            list,
+        )
+        publish(
+            properties.instantActions.name,
+            properties.instantActions.qos,
+            Vda5050Json.encodeToString(InstantActions.serializer(), message),
+        )
+    }
+
+    private fun publish(topic: String, qos: Int, json: String) {
+        link().publish("${properties.topicPrefix}/$topic", json.toByteArray(), qos)
+    }
+
+    private fun parsed(kind: IncomingTopic, payload: ByteArray): Any? {
+        val json = String(payload, Charsets.UTF_8)
+        if (properties.validateIncomingMessages) {
+            val problems = MessageValidator.problems(kind, json)
+            if (problems.isNotEmpty()) {
+                log.warn(
+                    "vehicle {}: dropped an invalid {} message: {}",
+                    vehicleName,
+                    kind.name.lowercase(),
+                    problems.take(MAX_PROBLEMS_LOGGED).joinToString("; "),
+                )
+                return null
+            }
+        }
+        return try {
+            when (kind) {
+                IncomingTopic.STATE -> Vda5050Json.decodeFromString(State.serializer(), json)
+                IncomingTopic.CONNECTION -> Vda5050Json.decodeFromString(Connection.serializer(), json)
+                IncomingTopic.VISUALIZATION -> Vda5050Json.decodeFromString(Visualization.serializer(), json)
+                IncomingTopic.FACTSHEET -> Vda5050Json.parseToJsonElement(json) as? JsonObject
+            }
+        } catch (error: SerializationException) {
+            unreadable(kind, error)
+        } catch (error: IllegalArgumentException) {
+            unreadable(kind, error)
+        }
+    }
+
+    private fun unreadable(kind: IncomingTopic, error: Exception): Nothing? {
+        log.warn("vehicle {}: dropped an unreadable {} message: {}", vehicleName, kind.name.lowercase(), error.message)
+        return null
+    }
+
+    private fun nextHeader(topic: String): Long = headerIds.merge(topic, 1L, Long::plus)!! - 1
+
+    private fun timestamp(): String = DateTimeFormatter.ISO_INSTANT.format(Instant.now())
+
+    private companion object {
+        const val MAX_PROBLEMS_LOGGED = 5
+    }
+}
