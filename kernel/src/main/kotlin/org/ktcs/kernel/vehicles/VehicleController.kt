@@ -111,7 +111,9 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
             val route = driveOrder.route ?: return@flatMap emptyList()
             plannedCommands(order, driveOrder, route) { env.plant.staticModel().location(it)?.name }
         }
-        env.scheduler().claim(this, (remaining + later).map { it.resources })
+        // A step asked for and not granted yet is still ahead: rerouting the later drive orders while the vehicle
+        // waits for a grant must not drop it from the claim.
+        env.scheduler().claim(this, (listOfNotNull(waiting) + remaining + later).map { it.resources })
     }
 
     internal fun requestNext() {

@@ -10,7 +10,9 @@ import org.ktcs.api.model.Vehicle
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
+import org.ktcs.api.scheduling.SchedulerClient
 import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.scheduling.DefaultScheduler
 import org.ktcs.kernel.simulation.SimulationKernel
 
 /** Rerouting on request, as openTCS's operators know it: regular from where the route goes on, forced from where the vehicle stands. */
@@ -121,6 +123,33 @@ class RerouteTest : FunSpec({
             kernel.core.orders.require("T").state shouldBe TransportOrderState.FINISHED
             kernel.core.orders.require("T").driveOrders.last().route!!.steps.map { it.path } shouldBe
                 listOf("X --- Y", "Y --- D")
+        }
+    }
+
+    test("routing the later drive orders anew while the vehicle waits for a grant keeps that step in its claim") {
+        val drivers = RecordingStepDrivers()
+        SimulationKernel(model, config, listOf(drivers.module)).use { kernel ->
+            val blocker = object : SchedulerClient {
+                override val name = "blocker"
+
+                override fun onAllocationGranted(resources: Set<String>) = true
+            }
+            kernel.now {
+                scheduler.allocateNow(blocker, setOf("W"))
+                createTransportOrder(
+                    TransportOrderCreation("T", listOf(Destination("X", "MOVE"), Destination("D", "MOVE"))),
+                )
+            }
+            kernel.context.runUntilTime(kernel.context.elapsedMillis() + 1_000)
+            kernel.now { scheduler.pendingAllocations()["V"] shouldBe listOf(setOf("A --- W", "W")) }
+
+            var rerouted: Boolean? = null
+            kernel.now { rerouted = controllers.controller("V").reroute(setOf("B")) }
+
+            rerouted shouldBe true
+            kernel.now {
+                (scheduler as DefaultScheduler).claims().getValue("V").first() shouldBe setOf("A --- W", "W")
+            }
         }
     }
 })
