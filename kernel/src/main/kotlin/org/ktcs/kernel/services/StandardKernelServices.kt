@@ -33,7 +33,7 @@ class StandardKernelServices(
     override val notifications: NotificationService = object : NotificationService {
         override suspend fun publish(
             notification: UserNotification,
-        ) = kernel.context.call { kernel.notifications.publish(notification) }
+        ) = kernel.context.call { kernel.publishNotification(notification) }
 
         override suspend fun notifications(): List<UserNotification> = kernel.context.call {
             kernel.notifications.recent()

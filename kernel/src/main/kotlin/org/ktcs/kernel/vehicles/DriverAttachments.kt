@@ -1,0 +1,18 @@
+package org.ktcs.kernel.vehicles
+
+import org.ktcs.api.driver.VehicleDriverFactory
+import org.ktcs.api.service.DriverAttachment
+
+/** Which drivers the vehicles have, read-only: what code outside the kernel's core may see of [VehicleControllers]. */
+interface DriverAttachments {
+    /** The latest events of the drivers, for clients that connect later. */
+    val recentEvents: RecentDriverEvents
+
+    fun attachment(vehicle: String): DriverAttachment
+
+    /** The name of the driver attached to [vehicle], or null. */
+    fun driverName(vehicle: String): String?
+
+    /** The factory named [name], or `null`. */
+    fun factory(name: String): VehicleDriverFactory?
+}
