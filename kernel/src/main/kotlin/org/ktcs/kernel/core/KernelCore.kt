@@ -65,6 +65,8 @@ class KernelCore(
     private val lifecycle = OrderLifecycle(state.orders, state.sequences, { router }, options.dismissUnroutableOrders)
     private val dispatching = KernelDispatchContext(this, state)
 
+    // snippet:kernel-views
+
     /** The kernel's events: listen (kernel components) or subscribe (clients); only the kernel publishes. */
     val events: KernelEvents get() = state.events
 
@@ -88,6 +90,7 @@ class KernelCore(
 
     /** What the dispatcher sees of the kernel and may do with it. */
     val dispatchContext: DispatchContext get() = dispatching
+    // end-snippet
 
     /** Where requests wait for their changes to be committed to the state store (none without a store). */
     var commits: CommitBarrier = CommitBarrier.NONE

@@ -65,7 +65,7 @@ class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
 
     override suspend fun recentDriverEvents(vehicle: String?): List<DriverEvent> = kernel.context.call {
         if (vehicle != null) kernel.plant.vehicle(vehicle)
-        kernel.controllers.recentEvents.of(vehicle)
+        kernel.controllers.recentDriverEvents(vehicle)
     }
 
     private suspend fun update(vehicle: String, change: (Vehicle) -> Vehicle) = kernel.durably {

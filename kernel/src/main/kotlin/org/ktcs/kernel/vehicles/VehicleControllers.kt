@@ -6,6 +6,7 @@ import org.ktcs.api.error.IllegalStateChangeException
 import org.ktcs.api.error.InvalidRequestException
 import org.ktcs.api.error.KernelException
 import org.ktcs.api.error.ObjectUnknownException
+import org.ktcs.api.event.DriverEvent
 import org.ktcs.api.event.NotificationLevel
 import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.service.DriverAttachment
@@ -24,7 +25,7 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
     private val contexts = HashMap<String, ControllerDriverContext>()
 
     /** The latest events of the drivers, for clients that connect later. */
-    override val recentEvents = RecentDriverEvents()
+    val recentEvents = RecentDriverEvents()
 
     fun controller(vehicle: String): VehicleController =
         controllers[vehicle] ?: throw ObjectUnknownException("unknown vehicle '$vehicle'")
@@ -32,6 +33,8 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
     fun all(): Collection<VehicleController> = controllers.values
 
     override fun driverName(vehicle: String): String? = controller(vehicle).driverName
+
+    override fun recentDriverEvents(vehicle: String?): List<DriverEvent> = recentEvents.of(vehicle)
 
     /** Creates the controllers for the vehicles of the plant and attaches their preferred drivers. */
     fun start(enableDrivers: Boolean, integrationLevel: IntegrationLevel) {
