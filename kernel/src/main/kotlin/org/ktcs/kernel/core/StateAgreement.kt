@@ -5,13 +5,12 @@ import org.ktcs.api.order.TransportOrderState
 import org.ktcs.api.scheduling.Scheduler
 
 /**
- * Where the kernel keeps one fact in more than one place, whether the copies agree once a step is done:
- * - which vehicle does which order: the order's `processingVehicle`, the vehicle's `transportOrder` and its
- *   controller's order;
- * - which resources a vehicle holds: its controller's, the vehicle's `allocatedResources` and the scheduler's
- *   allocations (those, with the rest of any SINGLE_VEHICLE_ONLY block they touch).
- * The copies are written together by the kernel's operations (the order and the vehicle are immutable values
- * published as events); tests check after every step of random operations that they never disagree.
+ * Where a fact is published in more than one immutable value, whether the copies agree once a step is done:
+ * - which vehicle does which order: the vehicle's `transportOrder` (its controller reads it there) and the order's
+ *   `processingVehicle`;
+ * - which resources a vehicle holds: its controller's (the store), the vehicle's `allocatedResources` (published
+ *   from it) and the scheduler's allocations (the same, with the rest of any SINGLE_VEHICLE_ONLY block they touch).
+ * Tests check after every step of random operations that they never disagree.
  */
 internal class StateAgreement(private val state: KernelState, private val scheduler: () -> Scheduler) {
     /** Every disagreement between the copies, as text; empty when they all agree. */
@@ -20,14 +19,16 @@ internal class StateAgreement(private val state: KernelState, private val schedu
     private fun orderAssignments(): List<String> {
         val found = mutableListOf<String>()
         state.plant.vehicles().forEach { vehicle ->
-            val controllers = state.controllers.controller(vehicle.name).transportOrder
-            if (controllers != vehicle.transportOrder) {
-                found += "vehicle ${vehicle.name} shows order ${vehicle.transportOrder}, its controller $controllers"
+            val name = vehicle.transportOrder ?: return@forEach
+            val order = state.orders.get(name)
+            if (order == null) {
+                found += "vehicle ${vehicle.name} shows order $name, which the kernel does not know"
+                return@forEach
             }
-            val order = vehicle.transportOrder?.let(state.orders::get) ?: return@forEach
             if (order.processingVehicle != vehicle.name) {
                 found += "vehicle ${vehicle.name} shows order ${order.name}, which names ${order.processingVehicle}"
             }
+            if (order.state.isFinal) found += "vehicle ${vehicle.name} shows order ${order.name}, which is ${order.state}"
         }
         state.orders.all().filter { it.state in UNDER_WAY && it.processingVehicle != null }.forEach { order ->
             val shown = state.plant.vehicleOrNull(order.processingVehicle!!)?.transportOrder
