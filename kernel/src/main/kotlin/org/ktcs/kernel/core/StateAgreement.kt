@@ -28,7 +28,9 @@ internal class StateAgreement(private val state: KernelState, private val schedu
             if (order.processingVehicle != vehicle.name) {
                 found += "vehicle ${vehicle.name} shows order ${order.name}, which names ${order.processingVehicle}"
             }
-            if (order.state.isFinal) found += "vehicle ${vehicle.name} shows order ${order.name}, which is ${order.state}"
+            if (order.state.isFinal) {
+                found += "vehicle ${vehicle.name} shows order ${order.name}, which is ${order.state}"
+            }
         }
         state.orders.all().filter { it.state in UNDER_WAY && it.processingVehicle != null }.forEach { order ->
             val shown = state.plant.vehicleOrNull(order.processingVehicle!!)?.transportOrder
