@@ -4,9 +4,11 @@ import org.ktcs.api.driver.DriverMessage
 import org.ktcs.api.driver.DriverPanelView
 import org.ktcs.api.error.IllegalStateChangeException
 import org.ktcs.api.error.InvalidRequestException
+import org.ktcs.api.error.ObjectUnknownException
 import org.ktcs.api.model.EnergyLevelThresholdSet
 import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.model.Vehicle
+import org.ktcs.api.order.Route
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.kernel.dispatching.VehicleAvailability
 import org.ktcs.kernel.orders.OrderLifecycle
@@ -126,6 +128,28 @@ class OperatorRequests(private val kernel: KernelCore, private val state: Kernel
         state.plant.vehicle(vehicle)
         state.controllers.controller(vehicle).reroute(emptySet(), forced)?.let {
             throw IllegalStateChangeException("cannot reroute vehicle '$vehicle': $it")
+        }
+    }
+
+    /**
+     * Up to [maxRoutes] routes for [vehicle] from [sourcePoint] (its position when null) to each of
+     * [destinationPoints], around [resourcesToAvoid].
+     */
+    fun routes(
+        vehicle: String,
+        sourcePoint: String?,
+        destinationPoints: List<String>,
+        resourcesToAvoid: Set<String>,
+        maxRoutes: Int,
+    ): Map<String, List<Route>> {
+        val current = state.plant.vehicle(vehicle)
+        val source = sourcePoint ?: current.currentPosition
+            ?: throw InvalidRequestException("vehicle '$vehicle' has no known position; give a source point")
+        (destinationPoints + source).forEach { point ->
+            state.plant.staticModel().point(point) ?: throw ObjectUnknownException("unknown point '$point'")
+        }
+        return destinationPoints.associateWith {
+            kernel.router.routes(current, source, it, resourcesToAvoid, maxRoutes)
         }
     }
 }
