@@ -5,13 +5,11 @@ import org.ktcs.api.dispatching.Dispatcher
 import org.ktcs.api.dispatching.RecoveryEvaluator
 import org.ktcs.api.driver.VehicleDriverFactory
 import org.ktcs.api.error.IllegalStateChangeException
-import org.ktcs.api.error.ObjectExistsException
 import org.ktcs.api.event.NotificationLevel
 import org.ktcs.api.event.UserNotification
 import org.ktcs.api.kernel.Cancellable
 import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.model.PlantModel
-import org.ktcs.api.model.XmlSafeText
 import org.ktcs.api.order.DriveOrder
 import org.ktcs.api.order.HistoryEntry
 import org.ktcs.api.order.OrderSequence
@@ -27,7 +25,6 @@ import org.ktcs.kernel.events.NotificationLog
 import org.ktcs.kernel.orders.HistoryCodes
 import org.ktcs.kernel.orders.OrderLifecycle
 import org.ktcs.kernel.orders.OrderSequences
-import org.ktcs.kernel.orders.TransportOrderFactory
 import org.ktcs.kernel.orders.TransportOrders
 import org.ktcs.kernel.store.CommitBarrier
 import org.ktcs.kernel.vehicles.DriverAttachments
@@ -61,7 +58,7 @@ class KernelCore(
     )
     private val state =
         KernelState(context, model, options, driverFactories, { scheduler }, { router }, trigger::request)
-    private val factory = TransportOrderFactory(context, state.names)
+    private val intake = OrderIntake(state)
     private val lifecycle = OrderLifecycle(state.orders, state.sequences, { router }, options.dismissUnroutableOrders)
     private val dispatching = KernelDispatchContext(this, state)
 
@@ -186,34 +183,9 @@ class KernelCore(
     /** Puts back a DISPATCHABLE order read from the state store at start (no event: nothing changed). */
     internal fun restoreDispatchable(order: TransportOrder) = dispatchable.restore(order)
 
-    fun nameTaken(name: String): Boolean =
-        orders.contains(name) || sequences.get(name) != null || plant.staticModel().objectNamed(name) != null
+    fun createTransportOrder(creation: TransportOrderCreation): TransportOrder = intake.createTransportOrder(creation)
 
-    fun createTransportOrder(creation: TransportOrderCreation): TransportOrder {
-        val order = factory.create(creation, plant.layoutWithLocks(), ::nameTaken, orders::contains, sequences::get)
-        state.orders.add(order)
-        return state.orders.require(order.name)
-    }
-
-    fun createOrderSequence(creation: OrderSequenceCreation): OrderSequence {
-        XmlSafeText.require(creation.name, "the order sequence name '${XmlSafeText.printable(creation.name)}'")
-        XmlSafeText.require(creation.type, "order sequence '${XmlSafeText.printable(creation.name)}': the type")
-        XmlSafeText.requireProperties(creation.properties, "order sequence '${XmlSafeText.printable(creation.name)}'")
-        val name = if (creation.incompleteName) state.names.complete(creation.name) else creation.name
-        if (nameTaken(name)) throw ObjectExistsException("an object named '$name' exists already")
-        creation.intendedVehicle?.let { plant.vehicle(it) }
-        return state.sequences.add(
-            OrderSequence(
-                name = name,
-                creationTime = context.now(),
-                type = creation.type,
-                orderTypes = creation.orderTypes,
-                intendedVehicle = creation.intendedVehicle,
-                failureFatal = creation.failureFatal,
-                properties = creation.properties,
-            ),
-        )
-    }
+    fun createOrderSequence(creation: OrderSequenceCreation): OrderSequence = intake.createOrderSequence(creation)
 
     fun markSequenceComplete(name: String) {
         state.sequences.update(name) {
