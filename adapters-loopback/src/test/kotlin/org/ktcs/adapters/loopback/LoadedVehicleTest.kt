@@ -50,7 +50,7 @@ class LoadedVehicleTest : FunSpec({
                 "vehicle Vehicle-01: driver refused: cannotLoadWhenLoaded"
 
             val reset = DriverMessage(LoopbackMessages.SET_LOADED, mapOf("value" to "false"))
-            kernel.now { kernel.core.controllers.sendMessage("Vehicle-01", reset) }
+            kernel.now { kernel.core.requests.sendDriverMessage("Vehicle-01", reset) }
             kernel.core.orders.require("Second").state shouldBe TransportOrderState.BEING_PROCESSED
             vehicle().waitingReason shouldBe null
         }

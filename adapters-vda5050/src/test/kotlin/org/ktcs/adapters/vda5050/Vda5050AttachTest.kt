@@ -50,7 +50,8 @@ class Vda5050AttachTest : FunSpec({
         val log = logLinesOf("org.ktcs.kernel.vehicles.VehicleControllers")
         application.start()
         try {
-            val drivers = application.kernel.controllers.all().associate { it.name to it.driverName }
+            val kernel = application.kernel
+            val drivers = kernel.plant.vehicles().associate { it.name to kernel.controllers.driverName(it.name) }
             drivers shouldBe mapOf(
                 v1.name to "vda5050",
                 v2.name to "vda5050",

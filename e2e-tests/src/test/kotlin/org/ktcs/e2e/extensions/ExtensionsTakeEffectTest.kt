@@ -28,7 +28,9 @@ class ExtensionsTakeEffectTest : FunSpec({
         val config = ConfigLoader().load(null, emptyMap(), listOf("dispatcher.parkIdleVehicles=false"))
 
         SimulationKernel(model, config, extensions.map { it.module() }).use { kernel ->
-            kernel.core.controllers.all().map { it.driverName }.toSet() shouldBe setOf("teleport")
+            kernel.core.plant.vehicles().map {
+                kernel.core.controllers.driverName(it.name)
+            }.toSet() shouldBe setOf("teleport")
             // One order after the other: this naive dispatcher parks nobody, so idle vehicles would block each other.
             repeat(5) { index ->
                 val creation =

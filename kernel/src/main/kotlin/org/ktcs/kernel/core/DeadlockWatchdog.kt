@@ -13,20 +13,17 @@ import org.slf4j.LoggerFactory
  * idle vehicles that stand in a waiting vehicle's way elsewhere ([IdleBlockers]).
  * The check costs in proportion to the waiting vehicles, not the plant.
  */
-class DeadlockWatchdog(private val kernel: KernelCore) {
+class DeadlockWatchdog(private val kernel: KernelCore, private val state: KernelState) : WatchdogFigures {
     private val log = LoggerFactory.getLogger(DeadlockWatchdog::class.java)
     private var next: Cancellable? = null
     private val stuck = StuckStates()
-    private val idleBlockers = IdleBlockers(kernel)
+    private val idleBlockers = IdleBlockers(kernel, state)
 
-    /** How many distinct stuck states (deadlocks) were found; one that shows as several cycles counts once. */
-    val detected: Int get() = stuck.detected
+    override val detected: Int get() = stuck.detected
 
-    /** How many deadlocks ended after the watchdog rerouted one of their vehicles. */
-    val resolved: Int get() = stuck.resolved
+    override val resolved: Int get() = stuck.resolved
 
-    /** How many idle vehicles were sent out of the way of waiting ones. */
-    val idleVehiclesMoved: Int get() = idleBlockers.moved
+    override val idleVehiclesMoved: Int get() = idleBlockers.moved
 
     fun start() {
         val interval = kernel.options.deadlockCheckIntervalMillis
@@ -60,7 +57,7 @@ class DeadlockWatchdog(private val kernel: KernelCore) {
             if (verdict.isNew) report(deadlock)
             if (!verdict.resolveNow) return@forEach
             if (DeadlockDetector.resolutions(deadlock, graph).any {
-                    kernel.controllers.controller(it.vehicle).reroute(it.resourcesToAvoid)
+                    kernel.reroute(it.vehicle, it.resourcesToAvoid)
                 }
             ) {
                 stuck.rerouted(deadlock.vehicles)
@@ -76,6 +73,6 @@ class DeadlockWatchdog(private val kernel: KernelCore) {
         val text = "deadlock: vehicles ${deadlock.vehicles.joinToString(
             " -> ",
         )} wait for each other; contested resources ${deadlock.resources.sorted().joinToString()}"
-        kernel.notifications.publish("deadlock watchdog", NotificationLevel.IMPORTANT, text)
+        state.notifications.publish("deadlock watchdog", NotificationLevel.IMPORTANT, text)
     }
 }

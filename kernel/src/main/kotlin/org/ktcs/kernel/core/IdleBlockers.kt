@@ -21,11 +21,11 @@ import org.slf4j.LoggerFactory
  *
  * The work is in proportion to the waiting vehicles; the plant is searched only when a vehicle must be moved.
  */
-class IdleBlockers(private val kernel: KernelCore) {
+class IdleBlockers(private val kernel: KernelCore, private val state: KernelState) {
     private val log = LoggerFactory.getLogger(IdleBlockers::class.java)
     private var blockingBefore = emptySet<String>()
     private val ordersSent = HashMap<String, String>()
-    private val availability = VehicleAvailability(kernel.orders::get, kernel.sequences::get)
+    private val availability = VehicleAvailability(state.orders::get, state.sequences::get)
 
     /** How many vehicles were sent out of the way so far. */
     var moved = 0
@@ -36,19 +36,19 @@ class IdleBlockers(private val kernel: KernelCore) {
         val blocking = graph.edges.values.flatMapTo(HashSet()) { it.keys }.filter { it !in waiting && isIdle(it) }
         blocking.filter { it in blockingBefore && !hasOrderUnderWay(it) }.forEach { vehicle ->
             val waiters = waiting.filter { graph.edges.getValue(it).containsKey(vehicle) }
-            moveAway(kernel.plant.vehicle(vehicle), waiters)
+            moveAway(state.plant.vehicle(vehicle), waiters)
         }
         blockingBefore = blocking.toSet()
     }
 
     private fun isIdle(name: String): Boolean {
-        val vehicle = kernel.plant.vehicleOrNull(name) ?: return false
+        val vehicle = state.plant.vehicleOrNull(name) ?: return false
         return vehicle.orderSequence == null && availability.isAvailable(vehicle, PARKING)
     }
 
     // An order sent earlier that the vehicle has not taken yet (e.g. it is still charging) is not sent twice.
     private fun hasOrderUnderWay(vehicle: String): Boolean =
-        ordersSent[vehicle]?.let { kernel.orders.get(it)?.state?.isFinal == false } == true
+        ordersSent[vehicle]?.let { state.orders.get(it)?.state?.isFinal == false } == true
 
     private fun moveAway(vehicle: Vehicle, waiters: List<String>) {
         val refuge = refugeFor(vehicle) ?: return log.warn(
@@ -71,7 +71,7 @@ class IdleBlockers(private val kernel: KernelCore) {
         moved++
         val text = "vehicle ${vehicle.name} stood idle in the way of ${waiters.joinToString()} at " +
             "${vehicle.currentPosition}; sent to ${refuge.name} with order ${order.name}"
-        kernel.notifications.publish("deadlock watchdog", NotificationLevel.NOTEWORTHY, text)
+        state.notifications.publish("deadlock watchdog", NotificationLevel.NOTEWORTHY, text)
         log.info(text)
         kernel.dispatch()
     }
@@ -79,12 +79,12 @@ class IdleBlockers(private val kernel: KernelCore) {
     // Park positions first, then points no location is linked to, then the rest; the nearest of the best kind.
     private fun refugeFor(vehicle: Vehicle): Point? {
         val taken = HashSet<String>()
-        kernel.plant.vehicles().forEach { other ->
+        state.plant.vehicles().forEach { other ->
             other.currentPosition?.let(taken::add)
             other.allocatedResources.forEach(taken::addAll)
             other.claimedResources.forEach(taken::addAll)
         }
-        val model = kernel.plant.layoutWithLocks()
+        val model = state.plant.layoutWithLocks()
         val linked = model.locations.flatMapTo(HashSet()) { location -> location.links.map { it.point } }
         val costs = kernel.router.costsFrom(vehicle, vehicle.currentPosition!!)
         return model.points.asSequence()

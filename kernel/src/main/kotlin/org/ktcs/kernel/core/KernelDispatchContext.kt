@@ -20,36 +20,36 @@ import org.ktcs.kernel.orders.HistoryCodes
  * dispensable order is reserved for it: the dispensable order is withdrawn regularly, and the reserved order is
  * routed from wherever the vehicle stops and assigned then.
  */
-class KernelDispatchContext(private val kernel: KernelCore) : DispatchContext {
+class KernelDispatchContext(private val kernel: KernelCore, private val state: KernelState) : DispatchContext {
     private val reservations = HashMap<String, String>()
 
     override val clock: KernelClock get() = kernel.context
 
     override val router: Router get() = kernel.router
 
-    override fun plantModel(): PlantModel = kernel.plant.layoutWithLocks()
+    override fun plantModel(): PlantModel = state.plant.layoutWithLocks()
 
-    override fun vehicles(): Collection<Vehicle> = kernel.plant.vehicles()
+    override fun vehicles(): Collection<Vehicle> = state.plant.vehicles()
 
     override fun dispatchableOrders(): Collection<TransportOrder> =
         kernel.dispatchableOrders().filter { it.name !in reservations }
 
-    override fun transportOrder(name: String): TransportOrder? = kernel.orders.get(name)
+    override fun transportOrder(name: String): TransportOrder? = state.orders.get(name)
 
-    override fun orderSequence(name: String): OrderSequence? = kernel.sequences.get(name)
+    override fun orderSequence(name: String): OrderSequence? = state.sequences.get(name)
 
     override fun driverAccepts(vehicle: String, order: TransportOrder): Explained =
-        kernel.controllers.controller(vehicle).driver?.canProcess(order)
+        state.controllers.controller(vehicle).driver?.canProcess(order)
             ?: Explained.no("vehicle $vehicle has no driver")
 
     override fun assign(order: String, vehicle: String, driveOrders: List<DriveOrder>) {
-        val controller = kernel.controllers.controller(vehicle)
+        val controller = state.controllers.controller(vehicle)
         val busyWith = controller.transportOrder
         if (busyWith == null) {
             kernel.assign(order, vehicle, driveOrders)
             return
         }
-        if (!kernel.orders.require(busyWith).dispensable) {
+        if (!state.orders.require(busyWith).dispensable) {
             throw IllegalStateChangeException(
                 "vehicle '$vehicle' is processing order '$busyWith', which is not dispensable",
             )
@@ -62,9 +62,9 @@ class KernelDispatchContext(private val kernel: KernelCore) : DispatchContext {
     fun onVehicleFree(vehicle: String) {
         val order = reservations.entries.firstOrNull { it.value == vehicle }?.key ?: return
         reservations.remove(order)
-        val current = kernel.orders.get(order)?.takeIf { it.state == TransportOrderState.DISPATCHABLE } ?: return
-        val position = kernel.plant.vehicle(vehicle).currentPosition ?: return
-        kernel.router.routeOrder(kernel.plant.vehicle(vehicle), position, current)?.let {
+        val current = state.orders.get(order)?.takeIf { it.state == TransportOrderState.DISPATCHABLE } ?: return
+        val position = state.plant.vehicle(vehicle).currentPosition ?: return
+        kernel.router.routeOrder(state.plant.vehicle(vehicle), position, current)?.let {
             kernel.assign(order, vehicle, it)
         }
     }
@@ -74,12 +74,12 @@ class KernelDispatchContext(private val kernel: KernelCore) : DispatchContext {
     )
 
     override fun vehicleWaiting(vehicle: String, reason: String?) {
-        if (kernel.plant.vehicleOrNull(vehicle)?.waitingReason == reason) return
-        kernel.plant.updateVehicle(vehicle) { it.copy(waitingReason = reason) }
+        if (state.plant.vehicleOrNull(vehicle)?.waitingReason == reason) return
+        state.plant.updateVehicle(vehicle) { it.copy(waitingReason = reason) }
     }
 
     override fun orderWaiting(order: String, reason: String) {
-        kernel.orders.update(order) { current ->
+        state.orders.update(order) { current ->
             val last = current.history.lastOrNull { it.eventCode == HistoryCodes.ORDER_DISPATCHING_DEFERRED }
             if (last?.supplement == reason) {
                 current

@@ -20,7 +20,7 @@ import java.time.Instant
  * Positions off a vehicle's route are checked where they are reported ([org.ktcs.kernel.vehicles.VehicleController]).
  * Runs on the kernel clock, in the kernel context.
  */
-class OperationsWatchdog(private val kernel: KernelCore) {
+class OperationsWatchdog(private val kernel: KernelCore, private val state: KernelState) {
     private val options = kernel.options.watchdog
     private val strandedSince = HashMap<String, Instant>()
     private val reportedVehicles = HashSet<String>()
@@ -52,21 +52,21 @@ class OperationsWatchdog(private val kernel: KernelCore) {
     /** Finds vehicles stranded for longer than the threshold. */
     fun checkVehicles() {
         val now = kernel.context.now()
-        val stranded = kernel.plant.vehicles().filter(::isStranded).mapTo(HashSet()) { it.name }
+        val stranded = state.plant.vehicles().filter(::isStranded).mapTo(HashSet()) { it.name }
         strandedSince.keys.retainAll(stranded)
         reportedVehicles.retainAll(stranded)
         for (name in stranded) {
             val since = strandedSince.getOrPut(name) { now }
             if (Duration.between(since, now).toMillis() < options.strandedVehicleMillis) continue
             if (!reportedVehicles.add(name)) continue
-            notify(name, "vehicle $name is stranded: ${strandedWhy(kernel.plant.vehicle(name))} since $since")
+            notify(name, "vehicle $name is stranded: ${strandedWhy(state.plant.vehicle(name))} since $since")
         }
     }
 
     /** Finds orders waiting longer than the threshold and unfinished orders past their deadline. */
     fun checkOrders() {
         val now = kernel.context.now()
-        val open = kernel.orders.all().filter { !it.state.isFinal }
+        val open = state.orders.all().filter { !it.state.isFinal }
         val names = open.mapTo(HashSet()) { it.name }
         reportedWaiting.retainAll(names)
         reportedLate.retainAll(names)
@@ -95,9 +95,9 @@ class OperationsWatchdog(private val kernel: KernelCore) {
         "idle at ${vehicle.currentPosition}, which is no park position, without an order"
     }
 
-    private fun isParkPosition(point: String) = kernel.plant.staticModel().point(point)?.type == PointType.PARK_POSITION
+    private fun isParkPosition(point: String) = state.plant.staticModel().point(point)?.type == PointType.PARK_POSITION
 
-    private fun notify(source: String, text: String) = kernel.notifications.publish(
+    private fun notify(source: String, text: String) = state.notifications.publish(
         source,
         NotificationLevel.NOTEWORTHY,
         text,

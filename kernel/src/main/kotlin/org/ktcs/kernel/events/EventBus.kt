@@ -17,7 +17,7 @@ import java.util.concurrent.CopyOnWriteArrayList
  * Every change of kernel state is published here, so with the kernel's [context] the bus also checks that changes
  * happen in that context: with JVM assertions on (`-ea`, as in every test run) a publish from another thread fails.
  */
-class EventBus(private val context: KernelContext? = null) {
+class EventBus(private val context: KernelContext? = null) : KernelEvents {
     private val listeners = CopyOnWriteArrayList<(KernelEvent) -> Unit>()
     private val subscribers = CopyOnWriteArrayList<Channel<KernelEvent>>()
 
@@ -26,20 +26,31 @@ class EventBus(private val context: KernelContext? = null) {
     private var delivering = false
 
     /** Calls [listener] for every event, in the kernel context, before the event reaches subscribers. */
-    fun listen(listener: (KernelEvent) -> Unit) {
+    override fun listen(listener: (KernelEvent) -> Unit) {
         listeners += listener
     }
 
     /** A new subscription that receives every event published from now on, buffering up to [capacity]. */
-    fun subscribe(capacity: Int = DEFAULT_CAPACITY): ReceiveChannel<KernelEvent> {
+    override fun subscribe(capacity: Int): ReceiveChannel<KernelEvent> {
         val channel = Channel<KernelEvent>(capacity)
         channel.invokeOnClose { subscribers.remove(channel) }
         subscribers += channel
         return channel
     }
 
+    /**
+     * With JVM assertions on (`-ea`, as in every test run), fails when kernel state is changed outside the kernel
+     * context: the pools, the plant state and the vehicle controllers call it where they change, [publish] for every
+     * event. [change] names the change for the error.
+     */
+    fun assertConfined(change: () -> Any) {
+        assert(context?.isInKernelContext() != false) {
+            "kernel state changed outside the kernel context (thread ${Thread.currentThread().name}): ${change()}"
+        }
+    }
+
     /** How many subscriptions are open now (each wakes its reader's thread for nearly every event). */
-    val subscriberCount: Int get() = subscribers.size
+    override val subscriberCount: Int get() = subscribers.size
 
     /**
      * Publishes [event]. An event published by a listener while another is being delivered waits until that one
@@ -50,9 +61,7 @@ class EventBus(private val context: KernelContext? = null) {
      * attached to it as suppressed), since a failing kernel listener is a defect that must not go unnoticed.
      */
     fun publish(event: KernelEvent) {
-        assert(context?.isInKernelContext() != false) {
-            "kernel state changed outside the kernel context (thread ${Thread.currentThread().name}): $event"
-        }
+        assertConfined { event }
         pending.addLast(event)
         if (delivering) return
         delivering = true

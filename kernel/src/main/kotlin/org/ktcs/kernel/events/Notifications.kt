@@ -7,7 +7,8 @@ import org.ktcs.api.kernel.KernelClock
 import org.slf4j.LoggerFactory
 
 /** Publishes user notifications, logs them, and keeps the most recent ones. Confined to the kernel context. */
-class Notifications(private val events: EventBus, private val clock: KernelClock, private val capacity: Int = 1000) {
+class Notifications(private val events: EventBus, private val clock: KernelClock, private val capacity: Int = 1000) :
+    NotificationLog {
     private val log = LoggerFactory.getLogger("org.ktcs.kernel.notifications")
     private val recent = ArrayDeque<UserNotification>()
 
@@ -23,10 +24,11 @@ class Notifications(private val events: EventBus, private val clock: KernelClock
         events.publish(UserNotificationEvent(notification))
     }
 
-    fun recent(): List<UserNotification> = recent.toList()
+    override fun recent(): List<UserNotification> = recent.toList()
 
     /** Puts back the notifications of a previous run, oldest first, without publishing them again. */
     fun restore(notifications: List<UserNotification>) {
+        events.assertConfined { "Notifications.restore" }
         notifications.takeLast(capacity).forEach {
             if (recent.size == capacity) recent.removeFirst()
             recent.addLast(it)

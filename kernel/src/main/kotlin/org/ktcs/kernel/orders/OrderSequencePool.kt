@@ -9,22 +9,24 @@ import org.ktcs.api.order.OrderSequence
 import org.ktcs.kernel.events.EventBus
 
 /** The order sequences the kernel knows; every change is published. Confined to the kernel context. */
-class OrderSequencePool(private val events: EventBus, private val clock: KernelClock) {
+class OrderSequencePool(private val events: EventBus, private val clock: KernelClock) : OrderSequences {
     private val sequences = LinkedHashMap<String, OrderSequence>()
 
-    fun get(name: String): OrderSequence? = sequences[name]
+    override fun get(name: String): OrderSequence? = sequences[name]
 
-    fun require(name: String): OrderSequence =
+    override fun require(name: String): OrderSequence =
         sequences[name] ?: throw ObjectUnknownException("unknown order sequence '$name'")
 
-    fun all(): Collection<OrderSequence> = sequences.values
+    override fun all(): Collection<OrderSequence> = sequences.values
 
     /** Puts back a sequence of a previous run as it was, without an event (before the kernel starts). */
     fun restore(sequence: OrderSequence) {
+        events.assertConfined { "OrderSequencePool.restore" }
         sequences[sequence.name] = sequence
     }
 
     fun add(sequence: OrderSequence): OrderSequence {
+        events.assertConfined { "OrderSequencePool.add" }
         if (sequence.name in sequences) throw ObjectExistsException("order sequence '${sequence.name}' exists already")
         val created = sequence.copy(
             history = sequence.history + HistoryEntry(clock.now(), HistoryCodes.SEQUENCE_CREATED),
@@ -35,6 +37,7 @@ class OrderSequencePool(private val events: EventBus, private val clock: KernelC
     }
 
     fun update(name: String, change: (OrderSequence) -> OrderSequence): OrderSequence {
+        events.assertConfined { "OrderSequencePool.update" }
         val previous = require(name)
         val current = change(previous)
         if (current == previous) return previous
@@ -50,6 +53,7 @@ class OrderSequencePool(private val events: EventBus, private val clock: KernelC
 
     /** Removes every finished sequence that [selected] picks (all of them by default). */
     fun removeFinished(selected: (OrderSequence) -> Boolean = { true }): List<String> {
+        events.assertConfined { "OrderSequencePool.removeFinished" }
         val old = sequences.values.filter { it.finished && selected(it) }
         old.forEach {
             sequences.remove(it.name)

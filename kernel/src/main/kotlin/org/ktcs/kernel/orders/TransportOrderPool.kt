@@ -15,24 +15,26 @@ import org.ktcs.kernel.events.EventBus
  * for everything else. Every change is published as a [TransportOrderEvent] with the previous and current order.
  * Confined to the kernel context.
  */
-class TransportOrderPool(private val events: EventBus, private val clock: KernelClock) {
+class TransportOrderPool(private val events: EventBus, private val clock: KernelClock) : TransportOrders {
     private val orders = LinkedHashMap<String, TransportOrder>()
 
-    fun get(name: String): TransportOrder? = orders[name]
+    override fun get(name: String): TransportOrder? = orders[name]
 
-    fun require(name: String): TransportOrder =
+    override fun require(name: String): TransportOrder =
         orders[name] ?: throw ObjectUnknownException("unknown transport order '$name'")
 
-    fun all(): Collection<TransportOrder> = orders.values
+    override fun all(): Collection<TransportOrder> = orders.values
 
-    fun contains(name: String): Boolean = name in orders
+    override fun contains(name: String): Boolean = name in orders
 
     /** Puts back an order of a previous run as it was, without an event (before the kernel starts). */
     fun restore(order: TransportOrder) {
+        events.assertConfined { "TransportOrderPool.restore" }
         orders[order.name] = order
     }
 
     fun add(order: TransportOrder): TransportOrder {
+        events.assertConfined { "TransportOrderPool.add" }
         if (order.name in orders) throw ObjectExistsException("transport order '${order.name}' exists already")
         val created = order.copy(history = order.history + HistoryEntry(clock.now(), HistoryCodes.ORDER_CREATED))
         orders[created.name] = created
@@ -42,6 +44,7 @@ class TransportOrderPool(private val events: EventBus, private val clock: Kernel
 
     /** Moves the order to [to] if the life cycle allows it; otherwise throws [IllegalStateChangeException]. */
     fun transition(name: String, to: TransportOrderState, supplement: String = ""): TransportOrder {
+        events.assertConfined { "TransportOrderPool.transition" }
         val order = require(name)
         if (!TransportOrderTransitions.isAllowed(order.state, to)) {
             throw IllegalStateChangeException("illegal transition ${order.state} -> $to for transport order '$name'")
@@ -58,6 +61,7 @@ class TransportOrderPool(private val events: EventBus, private val clock: Kernel
 
     /** Changes anything but the state. */
     fun update(name: String, change: (TransportOrder) -> TransportOrder): TransportOrder {
+        events.assertConfined { "TransportOrderPool.update" }
         val order = require(name)
         val changed = change(order)
         check(changed.state == order.state && changed.name == order.name) {
@@ -73,6 +77,7 @@ class TransportOrderPool(private val events: EventBus, private val clock: Kernel
 
     /** Removes every final order that [selected] picks (all of them by default). */
     fun removeFinal(selected: (TransportOrder) -> Boolean = { true }): List<String> {
+        events.assertConfined { "TransportOrderPool.removeFinal" }
         val old = orders.values.filter { it.state.isFinal && selected(it) }
         old.forEach { order ->
             orders.remove(order.name)

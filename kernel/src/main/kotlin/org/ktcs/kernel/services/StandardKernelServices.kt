@@ -33,7 +33,7 @@ class StandardKernelServices(
     override val notifications: NotificationService = object : NotificationService {
         override suspend fun publish(
             notification: UserNotification,
-        ) = kernel.context.call { kernel.notifications.publish(notification) }
+        ) = kernel.context.call { kernel.publishNotification(notification) }
 
         override suspend fun notifications(): List<UserNotification> = kernel.context.call {
             kernel.notifications.recent()
@@ -48,16 +48,7 @@ class StandardKernelServices(
             resourcesToAvoid: Set<String>,
             maxRoutes: Int,
         ): Map<String, List<Route>> = kernel.context.call {
-            val current = kernel.plant.vehicle(vehicle)
-            val source = sourcePoint ?: current.currentPosition
-                ?: throw org.ktcs.api.error.InvalidRequestException(
-                    "vehicle '$vehicle' has no known position; give a source point",
-                )
-            (destinationPoints + source).forEach { point ->
-                kernel.plant.staticModel().point(point)
-                    ?: throw org.ktcs.api.error.ObjectUnknownException("unknown point '$point'")
-            }
-            destinationPoints.associateWith { kernel.router.routes(current, source, it, resourcesToAvoid, maxRoutes) }
+            kernel.requests.routes(vehicle, sourcePoint, destinationPoints, resourcesToAvoid, maxRoutes)
         }
     }
 

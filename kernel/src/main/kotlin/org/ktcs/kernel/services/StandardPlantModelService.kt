@@ -25,7 +25,5 @@ class StandardPlantModelService(
         kernel.replacePlantModel(model) { published?.save(it) }
     }
 
-    override suspend fun updateRoutingTopology() = kernel.context.call {
-        kernel.router.updateTopology(kernel.plant.layoutWithLocks())
-    }
+    override suspend fun updateRoutingTopology() = kernel.context.call { kernel.updateRoutingTopology() }
 }

@@ -12,21 +12,18 @@ import org.ktcs.api.service.DriverAttachment
 import org.ktcs.api.service.VehicleService
 import org.ktcs.kernel.core.KernelCore
 import org.ktcs.kernel.store.durably
-import org.ktcs.kernel.vehicles.DriverPanels
 
 class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
-    private val panels = DriverPanels(kernel.controllers) { kernel.plant.staticModel() }
-
     override suspend fun vehicles(procState: ProcState?): List<Vehicle> =
         kernel.context.call { kernel.plant.vehicles().filter { procState == null || it.procState == procState } }
 
     override suspend fun vehicle(name: String): Vehicle? = kernel.context.call { kernel.plant.vehicleOrNull(name) }
 
     override suspend fun setIntegrationLevel(vehicle: String, level: IntegrationLevel) =
-        kernel.durably { kernel.controllers.setIntegrationLevel(vehicle, level) }
+        kernel.durably { kernel.requests.setIntegrationLevel(vehicle, level) }
 
     override suspend fun setPaused(vehicle: String, paused: Boolean) = kernel.durably {
-        kernel.controllers.setPaused(vehicle, paused)
+        kernel.requests.setPaused(vehicle, paused)
     }
 
     override suspend fun setAllowedOrderTypes(vehicle: String, types: Set<String>) = update(vehicle) {
@@ -46,31 +43,32 @@ class StandardVehicleService(private val kernel: KernelCore) : VehicleService {
     }
 
     override suspend fun attachDriver(vehicle: String, driver: String) = kernel.durably {
-        kernel.controllers.attach(vehicle, driver)
+        kernel.requests.attachDriver(vehicle, driver)
     }
 
     override suspend fun setDriverEnabled(vehicle: String, enabled: Boolean) =
-        kernel.durably { kernel.controllers.setDriverEnabled(vehicle, enabled) }
+        kernel.durably { kernel.requests.setDriverEnabled(vehicle, enabled) }
 
     override suspend fun sendDriverMessage(vehicle: String, message: DriverMessage) =
-        kernel.context.call { kernel.controllers.sendMessage(vehicle, message) }
+        kernel.context.call { kernel.requests.sendDriverMessage(vehicle, message) }
 
-    override suspend fun driverPanel(vehicle: String): DriverPanelView = kernel.context.call { panels.view(vehicle) }
+    override suspend fun driverPanel(vehicle: String): DriverPanelView = kernel.context.call {
+        kernel.requests.driverPanel(vehicle)
+    }
 
     override suspend fun executeDriverCommand(
         vehicle: String,
         driver: String,
         command: String,
         parameters: Map<String, String>,
-    ) = kernel.context.call { panels.execute(vehicle, driver, command, parameters) }
+    ) = kernel.context.call { kernel.requests.executeDriverCommand(vehicle, driver, command, parameters) }
 
     override suspend fun recentDriverEvents(vehicle: String?): List<DriverEvent> = kernel.context.call {
-        if (vehicle != null) kernel.controllers.controller(vehicle)
-        kernel.controllers.recentEvents.of(vehicle)
+        if (vehicle != null) kernel.plant.vehicle(vehicle)
+        kernel.controllers.recentDriverEvents(vehicle)
     }
 
     private suspend fun update(vehicle: String, change: (Vehicle) -> Vehicle) = kernel.durably {
-        kernel.plant.updateVehicle(vehicle, change)
-        kernel.dispatch()
+        kernel.requests.updateVehicle(vehicle, change)
     }
 }

@@ -29,7 +29,7 @@ class DurableState private constructor(
         recovery = StateRecovery(core, stored, mode).also { it.restore() }
         val lastNotification = stored.notifications.maxOfOrNull { it.first } ?: 0
         recorder = StateRecorder(core, journal, lastNotification).also { core.events.listen(it::onEvent) }
-        core.commits = journal
+        core.commitThrough(journal)
     }
 
     /** Continues the orders under way; right after the kernel started. */

@@ -71,7 +71,7 @@ class StateRecorder(private val core: KernelCore, private val journal: StateJour
     }
 
     private fun driverOf(vehicle: String): String? =
-        runCatching { core.controllers.controller(vehicle).driverName }.getOrNull()
+        runCatching { core.controllers.driverName(vehicle) }.getOrNull()
 
     private fun lock(name: String, lock: StoredLock) {
         journal.append(StoreChange.Put(StoreTable.PLANT_LOCKS, name, lock))

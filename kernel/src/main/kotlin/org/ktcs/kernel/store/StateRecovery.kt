@@ -17,19 +17,20 @@ import org.slf4j.LoggerFactory
  */
 class StateRecovery(private val core: KernelCore, private val state: StoredState, private val mode: RecoveryMode) {
     private val log = LoggerFactory.getLogger(StateRecovery::class.java)
+    private val restoration = core.restoration
     private val ignored = mutableListOf<String>()
 
     fun restore() {
-        state.names?.let { core.names.resumeAfter(it.millis, it.counter) }
-        state.sequences.forEach(core.sequences::restore)
-        state.orders.forEach(core.orders::restore)
-        core.notifications.restore(state.notifications.map { it.second })
+        state.names?.let { restoration.names(it.millis, it.counter) }
+        state.sequences.forEach(restoration::sequence)
+        state.orders.forEach(restoration::order)
+        restoration.notifications(state.notifications.map { it.second })
         state.locks.forEach { (name, lock) -> restoreLock(name, lock) }
         state.vehicles.forEach { stored ->
             if (core.plant.vehicleOrNull(stored.name) == null) {
                 ignored += "vehicle ${stored.name}"
             } else {
-                core.plant.updateVehicle(stored.name) { stored.applyTo(it) }
+                restoration.vehicle(stored.name) { stored.applyTo(it) }
             }
         }
     }
@@ -55,14 +56,12 @@ class StateRecovery(private val core: KernelCore, private val state: StoredState
 
                 TransportOrderState.WITHDRAWN -> withdraw(order, "it was being withdrawn")
 
-                TransportOrderState.DISPATCHABLE -> core.restoreDispatchable(order)
-
-                else -> core.lifecycle.onRestored(order)
+                else -> restoration.settled(order)
             }
         }
         state.sequences.filter { !it.finished && it.processingVehicle != null }.forEach { sequence ->
             core.plant.vehicleOrNull(sequence.processingVehicle!!)?.let {
-                core.plant.updateVehicle(it.name) { vehicle -> vehicle.copy(orderSequence = sequence.name) }
+                restoration.sequenceOf(it.name, sequence.name)
             }
         }
         core.dispatch()
@@ -72,19 +71,16 @@ class StateRecovery(private val core: KernelCore, private val state: StoredState
             "sequence(s), ${state.vehicles.size} vehicle(s), ${state.locks.count { it.value.locked }} lock(s)" +
             if (ignored.isEmpty()) "" else "; not in the plant model and ignored: ${ignored.joinToString()}"
         log.info(summary)
-        if (!state.isEmpty) core.notifications.publish("kernel", NotificationLevel.NOTEWORTHY, summary)
+        if (!state.isEmpty) core.publishNotification("kernel", NotificationLevel.NOTEWORTHY, summary)
         return summary
     }
 
     private fun restoreLock(name: String, lock: StoredLock) {
         try {
             if (lock.kind == StoredLock.PATH) {
-                core.plant.setPathLocked(
-                    name,
-                    lock.locked,
-                )
+                restoration.pathLock(name, lock.locked)
             } else {
-                core.plant.setLocationLocked(name, lock.locked)
+                restoration.locationLock(name, lock.locked)
             }
         } catch (unknown: KernelException) {
             ignored += "${lock.kind} $name"
@@ -93,17 +89,18 @@ class StateRecovery(private val core: KernelCore, private val state: StoredState
 
     private fun resumeVehicle(stored: StoredVehicle) {
         val controllers = core.controllers
+        val requests = core.requests
         try {
             val driver = stored.driver
-            if (driver != null && driver != controllers.controller(
+            if (driver != null && driver != controllers.driverName(
                     stored.name,
-                ).driverName && controllers.factory(driver) != null
+                ) && controllers.factory(driver) != null
             ) {
-                controllers.attach(stored.name, driver)
-                if (core.options.enableDriversOnStart) controllers.setDriverEnabled(stored.name, true)
+                requests.attachDriver(stored.name, driver)
+                if (core.options.enableDriversOnStart) requests.setDriverEnabled(stored.name, true)
             }
-            controllers.setIntegrationLevel(stored.name, stored.integrationLevel)
-            if (stored.paused) controllers.setPaused(stored.name, true)
+            requests.setIntegrationLevel(stored.name, stored.integrationLevel)
+            if (stored.paused) requests.setPaused(stored.name, true)
         } catch (refused: KernelException) {
             log.warn("vehicle {}: its stored settings are not all restored: {}", stored.name, refused.message)
         }
@@ -116,30 +113,18 @@ class StateRecovery(private val core: KernelCore, private val state: StoredState
         if (vehicle.integrationLevel < IntegrationLevel.TO_BE_RESPECTED) {
             return "vehicle ${vehicle.name} is ${vehicle.integrationLevel}"
         }
-        if (core.controllers.controller(vehicle.name).transportOrder != null) return "vehicle ${vehicle.name} is busy"
+        if (restoration.busyWith(vehicle.name) != null) return "vehicle ${vehicle.name} is busy"
         val index = order.driveOrders.indexOfFirst { it.state != DriveOrderState.FINISHED }
         if (index < 0) return "all its drive orders were finished"
         val rest = order.driveOrders.drop(index).map { it.copy(route = null, state = DriveOrderState.PRISTINE) }
         val routed = core.router.routeOrder(vehicle, position, order.copy(driveOrders = rest))
             ?: return "no route leads from $position to its remaining destinations"
-        core.orders.update(order.name) { it.copy(driveOrders = it.driveOrders.take(index) + routed) }
-        core.orders.addHistory(order.name, KERNEL_RESTARTED, "continued from $position")
-        order.wrappingSequence?.let { sequence ->
-            core.plant.updateVehicle(vehicle.name) { it.copy(orderSequence = sequence) }
-        }
-        core.controllers.controller(vehicle.name).resume(core.orders.require(order.name), index)
+        restoration.continueOrder(order, index, routed, KERNEL_RESTARTED, "continued from $position")
         return null
     }
 
     private fun withdraw(order: TransportOrder, reason: String) {
-        core.orders.addHistory(order.name, KERNEL_RESTARTED, "withdrawn: $reason")
-        if (order.state != TransportOrderState.WITHDRAWN) {
-            core.orders.transition(
-                order.name,
-                TransportOrderState.WITHDRAWN,
-            )
-        }
-        core.orders.transition(order.name, TransportOrderState.FAILED, "withdrawn: the kernel restarted")
+        restoration.failOrder(order, KERNEL_RESTARTED, "withdrawn: $reason", "withdrawn: the kernel restarted")
     }
 
     companion object {

@@ -28,8 +28,9 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
     internal val remaining = ArrayDeque<PlannedCommand>()
     internal val sent = ArrayDeque<PlannedCommand>()
     internal var waiting: PlannedCommand? = null
-    internal var currentOrder: String? = null
-        private set
+
+    // The vehicle's `transportOrder` is the one store of the order it works on; the controller reads it there.
+    internal val currentOrder: String? get() = env.plant.vehicle(name).transportOrder
     internal var withdrawing = false
         private set
     private var withdrawReason = ""
@@ -66,7 +67,6 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
      */
     fun resume(order: TransportOrder, index: Int) {
         check(currentOrder == null) { "vehicle '$name' is already processing '$currentOrder'" }
-        currentOrder = order.name
         withdrawing = false
         env.plant.updateVehicle(name) {
             it.copy(
@@ -221,7 +221,6 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
 
     private fun endOrder(state: TransportOrderState) {
         val order = currentOrder!!
-        currentOrder = null
         withdrawing = false
         remaining.clear()
         env.scheduler().unclaim(this)

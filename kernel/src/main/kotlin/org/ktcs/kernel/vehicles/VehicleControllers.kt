@@ -6,6 +6,7 @@ import org.ktcs.api.error.IllegalStateChangeException
 import org.ktcs.api.error.InvalidRequestException
 import org.ktcs.api.error.KernelException
 import org.ktcs.api.error.ObjectUnknownException
+import org.ktcs.api.event.DriverEvent
 import org.ktcs.api.event.NotificationLevel
 import org.ktcs.api.model.IntegrationLevel
 import org.ktcs.api.service.DriverAttachment
@@ -17,7 +18,8 @@ import org.slf4j.LoggerFactory
  * the vehicle's own properties), else the first factory that can drive it.
  * Confined to the kernel context.
  */
-class VehicleControllers(private val env: VehicleEnvironment, private val factories: List<VehicleDriverFactory>) {
+class VehicleControllers(private val env: VehicleEnvironment, private val factories: List<VehicleDriverFactory>) :
+    DriverAttachments {
     private val log = LoggerFactory.getLogger(VehicleControllers::class.java)
     private val controllers = LinkedHashMap<String, VehicleController>()
     private val contexts = HashMap<String, ControllerDriverContext>()
@@ -30,8 +32,13 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
 
     fun all(): Collection<VehicleController> = controllers.values
 
+    override fun driverName(vehicle: String): String? = controller(vehicle).driverName
+
+    override fun recentDriverEvents(vehicle: String?): List<DriverEvent> = recentEvents.of(vehicle)
+
     /** Creates the controllers for the vehicles of the plant and attaches their preferred drivers. */
     fun start(enableDrivers: Boolean, integrationLevel: IntegrationLevel) {
+        env.events.assertConfined { "VehicleControllers.start" }
         env.plant.vehicles().forEach { vehicle ->
             val controller = VehicleController(vehicle.name, env)
             controllers[vehicle.name] = controller
@@ -67,6 +74,7 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
 
     /** Disables every driver and forgets every controller, before the plant model is replaced. */
     fun discard() {
+        env.events.assertConfined { "VehicleControllers.discard" }
         stop()
         contexts.values.forEach(ControllerDriverContext::retire)
         controllers.clear()
@@ -74,7 +82,7 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
         recentEvents.clear()
     }
 
-    fun attachment(vehicle: String): DriverAttachment {
+    override fun attachment(vehicle: String): DriverAttachment {
         val controller = controller(vehicle)
         return DriverAttachment(
             vehicle,
@@ -85,6 +93,7 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
     }
 
     fun attach(vehicle: String, driverName: String) {
+        env.events.assertConfined { "VehicleControllers.attach" }
         val controller = controller(vehicle)
         val factory = available(vehicle).firstOrNull { it.name == driverName }
             ?: throw InvalidRequestException(
@@ -106,6 +115,7 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
     }
 
     fun setDriverEnabled(vehicle: String, enabled: Boolean) {
+        env.events.assertConfined { "VehicleControllers.setDriverEnabled" }
         val controller = controller(vehicle)
         val driver = controller.driver ?: throw IllegalStateChangeException("vehicle '$vehicle' has no driver attached")
         if (enabled) {
@@ -118,6 +128,7 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
     }
 
     fun sendMessage(vehicle: String, message: DriverMessage) {
+        env.events.assertConfined { "VehicleControllers.sendMessage" }
         val driver =
             controller(vehicle).driver ?: throw IllegalStateChangeException("vehicle '$vehicle' has no driver attached")
         try {
@@ -128,6 +139,7 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
     }
 
     fun setIntegrationLevel(vehicle: String, level: IntegrationLevel) {
+        env.events.assertConfined { "VehicleControllers.setIntegrationLevel" }
         val controller = controller(vehicle)
         if (level <= IntegrationLevel.TO_BE_NOTICED && controller.transportOrder != null) {
             throw IllegalStateChangeException(
@@ -148,6 +160,7 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
     }
 
     fun setPaused(vehicle: String, paused: Boolean) {
+        env.events.assertConfined { "VehicleControllers.setPaused" }
         val controller = controller(vehicle)
         env.plant.updateVehicle(vehicle) { it.copy(paused = paused) }
         env.scheduler().setPaused(controller, paused)
@@ -156,7 +169,7 @@ class VehicleControllers(private val env: VehicleEnvironment, private val factor
     }
 
     /** The factory named [name], or `null`. */
-    fun factory(name: String): VehicleDriverFactory? = factories.firstOrNull { it.name == name }
+    override fun factory(name: String): VehicleDriverFactory? = factories.firstOrNull { it.name == name }
 
     private fun available(vehicle: String): List<VehicleDriverFactory> =
         factories.filter { it.canDrive(vehicle, contexts.getValue(vehicle)) }

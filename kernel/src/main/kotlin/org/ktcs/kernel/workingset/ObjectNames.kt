@@ -7,15 +7,15 @@ import org.ktcs.api.kernel.KernelClock
  * the creation time in milliseconds, the rest a counter. Names sort by creation time and never repeat. Unlike a
  * random ULID, the counter keeps simulations reproducible.
  */
-class ObjectNames(private val clock: KernelClock) {
+class ObjectNames(private val clock: KernelClock) : NamesUsed {
     private var lastMillis = -1L
     private var counter = 0L
 
     /** The millisecond of the last name completed (-1 before the first); kept by the state store. */
-    val lastMillisUsed: Long get() = lastMillis
+    override val lastMillisUsed: Long get() = lastMillis
 
     /** The counter of the last name completed within [lastMillisUsed]. */
-    val lastCounterUsed: Long get() = counter
+    override val lastCounterUsed: Long get() = counter
 
     /** Continues after the name made at [millis] with [counter] (the position of a previous run). */
     fun resumeAfter(millis: Long, counter: Long) {

@@ -21,7 +21,7 @@ import java.util.concurrent.ConcurrentHashMap
  * thread: [layoutWithLocks] (rebuilt when a lock changes) and [publishedVehicle] / [publishedVehicles] (one
  * immutable [Vehicle] per name, replaced when it changes).
  */
-class PlantState(initial: PlantModel, private val events: EventBus) {
+class PlantState(initial: PlantModel, private val events: EventBus) : PlantView {
     private var base = initial
     private val paths = LinkedHashMap<String, Path>()
     private val locations = LinkedHashMap<String, Location>()
@@ -37,7 +37,7 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
     }
 
     /** The current plant as one immutable model. */
-    fun model(): PlantModel = snapshot ?: base.copy(
+    override fun model(): PlantModel = snapshot ?: base.copy(
         paths = paths.values.toList(),
         locations = locations.values.toList(),
         vehicles = vehicles.values.toList(),
@@ -48,28 +48,33 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
      * (use [model] or [vehicle] for those). Unlike [model] it changes only when a lock does, so strategies and
      * drivers can read it on every event without copying the plant each time. Safe to read from any thread.
      */
-    fun layoutWithLocks(): PlantModel = layout
+    override fun layoutWithLocks(): PlantModel = layout
 
     /** The vehicle [name] as it is now, or null if there is none; safe to read from any thread. */
-    fun publishedVehicle(name: String): Vehicle? = published[name]
+    override fun publishedVehicle(name: String): Vehicle? = published[name]
 
     /** The vehicles as they are now, in no particular order; safe to read from any thread. */
-    fun publishedVehicles(): Collection<Vehicle> = published.values
+    override fun publishedVehicles(): Collection<Vehicle> = published.values
 
     /** The model as loaded, without runtime changes: points, location types and blocks never change at runtime. */
-    fun staticModel(): PlantModel = base
+    override fun staticModel(): PlantModel = base
 
-    fun vehicle(name: String): Vehicle = vehicles[name] ?: throw ObjectUnknownException("unknown vehicle '$name'")
+    override fun vehicle(name: String): Vehicle = vehicles[name] ?: throw ObjectUnknownException(
+        "unknown vehicle '$name'",
+    )
 
-    fun vehicleOrNull(name: String): Vehicle? = vehicles[name]
+    override fun vehicleOrNull(name: String): Vehicle? = vehicles[name]
 
-    fun vehicles(): Collection<Vehicle> = vehicles.values
+    override fun vehicles(): Collection<Vehicle> = vehicles.values
 
-    fun path(name: String): Path = paths[name] ?: throw ObjectUnknownException("unknown path '$name'")
+    override fun path(name: String): Path = paths[name] ?: throw ObjectUnknownException("unknown path '$name'")
 
-    fun location(name: String): Location = locations[name] ?: throw ObjectUnknownException("unknown location '$name'")
+    override fun location(name: String): Location = locations[name] ?: throw ObjectUnknownException(
+        "unknown location '$name'",
+    )
 
     fun updateVehicle(name: String, change: (Vehicle) -> Vehicle): Vehicle {
+        events.assertConfined { "PlantState.updateVehicle" }
         val previous = vehicle(name)
         val current = change(previous)
         if (current == previous) return previous
@@ -82,6 +87,7 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
     }
 
     fun setPathLocked(name: String, locked: Boolean): Path {
+        events.assertConfined { "PlantState.setPathLocked" }
         val previous = path(name)
         if (previous.locked == locked) return previous
         return previous.copy(locked = locked).also {
@@ -92,6 +98,7 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
     }
 
     fun setLocationLocked(name: String, locked: Boolean): Location {
+        events.assertConfined { "PlantState.setLocationLocked" }
         val previous = location(name)
         if (previous.locked == locked) return previous
         return previous.copy(locked = locked).also {
@@ -103,6 +110,7 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
 
     /** Takes the new versions of paths and locations whose locks or velocities changed; vehicles stay as they are. */
     fun apply(change: TopologyChange) {
+        events.assertConfined { "PlantState.apply" }
         for (path in change.paths) {
             val previous = path(path.name)
             paths[path.name] = path
@@ -119,6 +127,7 @@ class PlantState(initial: PlantModel, private val events: EventBus) {
 
     /** Replaces the whole plant. */
     fun replace(model: PlantModel) {
+        events.assertConfined { "PlantState.replace" }
         load(model)
         events.publish(PlantModelReplacedEvent(model))
     }

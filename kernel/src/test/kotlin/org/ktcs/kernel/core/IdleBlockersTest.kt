@@ -78,7 +78,7 @@ class IdleBlockersTest : FunSpec({
     test("an idle vehicle that does not accept park orders is not sent an order it would never take") {
         kernel().use { kernel ->
             kernel.context.execute {
-                kernel.core.plant.updateVehicle("Parked") {
+                kernel.core.requests.updateVehicle("Parked") {
                     it.copy(acceptableOrderTypes = setOf(AcceptableOrderType("Transport", 0)))
                 }
             }

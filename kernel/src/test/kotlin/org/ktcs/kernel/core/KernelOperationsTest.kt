@@ -171,8 +171,7 @@ class KernelOperationsTest : FunSpec({
         kernel().use { kernel ->
             val path = "Point-0001 --- Point-0002"
             kernel.run {
-                plant.setPathLocked(path, true)
-                router.updateTopology(plant.model())
+                setPathLocked(path, true)
                 createTransportOrder(TransportOrderCreation("T", longTrip))
             }
             kernel.context.runUntil { kernel.state("T").isFinal }
@@ -233,11 +232,11 @@ class KernelOperationsTest : FunSpec({
         kernel().use { kernel ->
             kernel.run { createTransportOrder(TransportOrderCreation("T", longTrip, intendedVehicle = "Vehicle-02")) }
             kernel.runFor(1_000)
-            kernel.run { controllers.setPaused("Vehicle-02", true) }
+            kernel.run { requests.setPaused("Vehicle-02", true) }
             kernel.runFor(600_000)
             kernel.state("T") shouldBe TransportOrderState.BEING_PROCESSED
             kernel.core.plant.vehicle("Vehicle-02").paused shouldBe true
-            kernel.run { controllers.setPaused("Vehicle-02", false) }
+            kernel.run { requests.setPaused("Vehicle-02", false) }
             kernel.context.runUntil { kernel.state("T").isFinal }
             kernel.state("T") shouldBe TransportOrderState.FINISHED
         }

@@ -48,7 +48,7 @@ class OperationsWatchdogTest : FunSpec({
 
     test("an order waiting longer than the threshold is reported once, with its reason") {
         SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
-            kernel.execute { controllers.setPaused("Vehicle-02", true) }
+            kernel.execute { requests.setPaused("Vehicle-02", true) }
             kernel.execute { createTransportOrder(TransportOrderCreation("T", trip, intendedVehicle = "Vehicle-02")) }
             kernel.runFor(3_000)
             kernel.notifications("has waited").shouldBeEmpty()
@@ -59,7 +59,7 @@ class OperationsWatchdogTest : FunSpec({
 
     test("an unfinished order past its deadline is reported once") {
         SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
-            kernel.execute { controllers.setPaused("Vehicle-02", true) }
+            kernel.execute { requests.setPaused("Vehicle-02", true) }
             val deadline = kernel.context.now().plusMillis(2_000)
             kernel.execute {
                 createTransportOrder(

@@ -32,14 +32,14 @@ class ReplacedSchedulerTest : FunSpec({
     test("a deadlock only the replacement knows of is reported") {
         SimulationKernel(demo, config, listOf(replacing)).use { kernel ->
             val scheduler = kernel.core.scheduler as ReplacementScheduler
-            kernel.execute { watchdog.check() }
+            kernel.execute { checkForDeadlocks() }
             kernel.core.watchdog.detected shouldBe 0
 
             scheduler.waits = mapOf(
                 "Vehicle-01" to mapOf("Vehicle-02" to setOf("Point-0002")),
                 "Vehicle-02" to mapOf("Vehicle-01" to setOf("Point-0001")),
             )
-            kernel.execute { watchdog.check() }
+            kernel.execute { checkForDeadlocks() }
 
             kernel.core.watchdog.detected shouldBe 1
             kernel.core.notifications.recent().map {

@@ -41,7 +41,10 @@ class RerouteTest : FunSpec({
 
     fun SimulationKernel.reroute(forced: Boolean): String? {
         var refusal: String? = null
-        now { refusal = controllers.controller("V").reroute(emptySet(), forced) }
+        now {
+            refusal = runCatching { requests.reroute("V", forced) }.exceptionOrNull()?.message
+                ?.removePrefix("cannot reroute vehicle 'V': ")
+        }
         return refusal
     }
 
@@ -49,7 +52,7 @@ class RerouteTest : FunSpec({
     fun SimulationKernel.carriedOffItsRoute(drivers: RecordingStepDrivers) {
         now { createTransportOrder(TransportOrderCreation("T", listOf(Destination("D", "MOVE")))) }
         context.runUntilTime(context.elapsedMillis() + 1_000)
-        now { controllers.setPaused("V", true) }
+        now { requests.setPaused("V", true) }
         context.runUntilTime(context.elapsedMillis() + 30_000)
         core.plant.vehicle("V").currentPosition shouldBe "X"
         now { drivers.contexts.getValue("V").reportPosition("Y") }
@@ -70,7 +73,7 @@ class RerouteTest : FunSpec({
             kernel.reroute(forced = false)!! shouldContain "stands at Y, not at X"
             kernel.reroute(forced = true) shouldBe null
             kernel.core.plant.vehicle("V").allocatedResources shouldBe listOf(setOf("Y"))
-            kernel.now { controllers.setPaused("V", false) }
+            kernel.now { requests.setPaused("V", false) }
             kernel.context.runUntil { kernel.core.orders.require("T").state.isFinal }
             kernel.core.orders.require("T").state shouldBe TransportOrderState.FINISHED
             kernel.core.orders.require("T").driveOrders.single().route!!.steps.map { it.path } shouldBe
@@ -98,7 +101,7 @@ class RerouteTest : FunSpec({
             kernel.now { createTransportOrder(TransportOrderCreation("T", listOf(Destination("W", "MOVE")))) }
             kernel.context.runUntilTime(kernel.context.elapsedMillis() + 1_000)
             var rerouted: Boolean? = null
-            kernel.now { rerouted = controllers.controller("V").reroute(emptySet()) }
+            kernel.now { rerouted = reroute("V", avoid = emptySet()) }
             // The deadlock watchdog relies on this: a vehicle that did not change its way did not resolve anything.
             rerouted shouldBe false
             kernel.reroute(forced = false) shouldBe null
@@ -116,7 +119,7 @@ class RerouteTest : FunSpec({
             }
             kernel.context.runUntilTime(kernel.context.elapsedMillis() + 1_000)
             var rerouted: Boolean? = null
-            kernel.now { rerouted = controllers.controller("V").reroute(setOf("B")) }
+            kernel.now { rerouted = reroute("V", avoid = setOf("B")) }
 
             rerouted shouldBe true
             kernel.context.runUntil { kernel.core.orders.require("T").state.isFinal }

@@ -45,11 +45,11 @@ class WaitingReasonTest : FunSpec({
 
     test("a paused intended vehicle: said, and gone once it is resumed") {
         SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
-            kernel.now { kernel.core.controllers.setPaused("Vehicle-02", true) }
+            kernel.now { kernel.core.requests.setPaused("Vehicle-02", true) }
             kernel.order("T", vehicle = "Vehicle-02")
             kernel.reason("T") shouldBe "intended vehicle Vehicle-02: paused"
             kernel.core.plant.vehicle("Vehicle-02").waitingReason shouldBe "paused"
-            kernel.now { kernel.core.controllers.setPaused("Vehicle-02", false) }
+            kernel.now { kernel.core.requests.setPaused("Vehicle-02", false) }
             kernel.reason("T") shouldBe null
             kernel.core.plant.vehicle("Vehicle-02").waitingReason shouldBe null
         }
@@ -68,11 +68,11 @@ class WaitingReasonTest : FunSpec({
 
     test("a locked destination: said, and gone once it is unlocked") {
         SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
-            kernel.now { kernel.core.plant.setLocationLocked("Goods out 02", true) }
+            kernel.now { kernel.core.requests.setLocationLocked("Goods out 02", true) }
             kernel.order("T")
             kernel.reason("T") shouldBe "target location Goods out 02 is locked"
             kernel.now {
-                kernel.core.plant.setLocationLocked("Goods out 02", false)
+                kernel.core.requests.setLocationLocked("Goods out 02", false)
                 kernel.core.dispatch()
             }
             kernel.reason("T") shouldBe null
@@ -81,7 +81,7 @@ class WaitingReasonTest : FunSpec({
 
     test("unfinished dependencies are named while the order is ACTIVE, failed ones too, and gone once finished") {
         SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
-            kernel.now { kernel.core.controllers.setPaused("Vehicle-02", true) }
+            kernel.now { kernel.core.requests.setPaused("Vehicle-02", true) }
             kernel.order("First", vehicle = "Vehicle-01")
             kernel.order("Other", vehicle = "Vehicle-02")
             kernel.now {
@@ -91,7 +91,7 @@ class WaitingReasonTest : FunSpec({
             kernel.reason("Then") shouldBe "dependencies not finished: First, Other"
             kernel.context.runUntil { kernel.core.orders.require("First").state.isFinal }
             kernel.reason("Then") shouldBe "dependencies not finished: Other"
-            kernel.now { kernel.core.controllers.setPaused("Vehicle-02", false) }
+            kernel.now { kernel.core.requests.setPaused("Vehicle-02", false) }
             kernel.context.runUntil { kernel.core.orders.require("Then").state.name != "ACTIVE" }
             kernel.reason("Then") shouldBe null
         }
@@ -129,10 +129,10 @@ class WaitingReasonTest : FunSpec({
 
     test("each change of reason is one history entry") {
         SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
-            kernel.now { kernel.core.controllers.setPaused("Vehicle-02", true) }
+            kernel.now { kernel.core.requests.setPaused("Vehicle-02", true) }
             kernel.order("T", vehicle = "Vehicle-02")
             kernel.now { kernel.core.dispatch() }
-            kernel.now { kernel.core.plant.setLocationLocked("Goods out 02", true) }
+            kernel.now { kernel.core.requests.setLocationLocked("Goods out 02", true) }
             kernel.now { kernel.core.dispatch() }
             kernel.core.orders.require("T").history.filter { it.eventCode == "tcs:history:orderDispatchingDeferred" }
                 .map { it.supplement } shouldBe

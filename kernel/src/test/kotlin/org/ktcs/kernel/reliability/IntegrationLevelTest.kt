@@ -16,7 +16,7 @@ class IntegrationLevelTest : FunSpec({
     test("a vehicle whose point another vehicle holds stays below RESPECTED, with a notification, until it is free") {
         demoKernel("dispatcher.parkIdleVehicles=false", "dispatcher.rechargeIdleVehicles=false").use { kernel ->
             val point = kernel.inKernel { plant.vehicle("Vehicle-01").currentPosition!! }
-            kernel.inKernel { controllers.setIntegrationLevel("Vehicle-01", IntegrationLevel.TO_BE_IGNORED) }
+            kernel.inKernel { requests.setIntegrationLevel("Vehicle-01", IntegrationLevel.TO_BE_IGNORED) }
             kernel.inKernel {
                 createTransportOrder(
                     TransportOrderCreation(
@@ -30,7 +30,7 @@ class IntegrationLevelTest : FunSpec({
             kernel.core.scheduler.allocations()["Vehicle-02"]!!.contains(point) shouldBe true
 
             val refused = shouldThrow<IllegalStateChangeException> {
-                kernel.inKernel { controllers.setIntegrationLevel("Vehicle-01", IntegrationLevel.TO_BE_UTILIZED) }
+                kernel.inKernel { requests.setIntegrationLevel("Vehicle-01", IntegrationLevel.TO_BE_UTILIZED) }
             }
 
             refused.message shouldContain "Vehicle-02"
@@ -49,7 +49,7 @@ class IntegrationLevelTest : FunSpec({
                 )
             }
             kernel.context.runUntil { kernel.core.orders.require("Away").state.isFinal }
-            kernel.inKernel { controllers.setIntegrationLevel("Vehicle-01", IntegrationLevel.TO_BE_UTILIZED) }
+            kernel.inKernel { requests.setIntegrationLevel("Vehicle-01", IntegrationLevel.TO_BE_UTILIZED) }
             kernel.core.scheduler.allocations()["Vehicle-01"] shouldBe setOf(point)
             kernel.doublyHeld().shouldBeEmpty()
         }

@@ -28,11 +28,11 @@ class CommitBarrierTest : FunSpec({
             val committed = CompletableDeferred<Unit>()
             var marked = 0L
             it.onKernel {
-                it.core.commits = object : CommitBarrier {
+                it.core.commitThrough(object : CommitBarrier {
                     override fun mark(): Long = ++marked
 
                     override suspend fun awaitCommitted(mark: Long) = committed.await()
-                }
+                })
             }
             val creation = TransportOrderCreation("T1", listOf(Destination("Storage 01", "Load cargo")))
 

@@ -61,10 +61,10 @@ class DurableStateTest : FunSpec({
         RestartableKernel(RestartableKernel.settingsFor(directory)).run {
             onKernel {
                 setPathLocked("Point-0001 --- Point-0002", true)
-                plant.setLocationLocked("Storage 02", true)
-                controllers.setPaused("Vehicle-02", true)
-                controllers.setIntegrationLevel("Vehicle-03", IntegrationLevel.TO_BE_RESPECTED)
-                plant.updateVehicle("Vehicle-01") {
+                requests.setLocationLocked("Storage 02", true)
+                requests.setPaused("Vehicle-02", true)
+                requests.setIntegrationLevel("Vehicle-03", IntegrationLevel.TO_BE_RESPECTED)
+                requests.updateVehicle("Vehicle-01") {
                     it.copy(
                         energyLevel = 37,
                         energyLevelThresholdSet = EnergyLevelThresholdSet(10, 80, 20, 95),
@@ -73,7 +73,7 @@ class DurableStateTest : FunSpec({
                         precisePosition = Position(1_000, 2_000),
                     )
                 }
-                notifications.publish("test", NotificationLevel.IMPORTANT, "remember me")
+                publishNotification("test", NotificationLevel.IMPORTANT, "remember me")
             }
             crash()
         }

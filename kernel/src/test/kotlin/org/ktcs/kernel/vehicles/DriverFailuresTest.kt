@@ -56,8 +56,8 @@ class DriverFailuresTest : FunSpec({
     test("a vehicle whose driver refuses its settings starts without a driver; the others and the kernel start") {
         kernel().use { kernel ->
             val controllers = kernel.core.controllers
-            controllers.controller("Good").driverName shouldBe "picky"
-            controllers.controller("Bad").driverName shouldBe null
+            controllers.driverName("Good") shouldBe "picky"
+            controllers.driverName("Bad") shouldBe null
             kernel.core.notifications.recent().single { it.source == "Bad" }.text shouldContain
                 "picky:port must be a number"
         }
@@ -67,7 +67,7 @@ class DriverFailuresTest : FunSpec({
         kernel().use { kernel ->
             var outcome: Result<Unit>? = null
             kernel.context.execute {
-                outcome = runCatching { kernel.core.controllers.sendMessage("Good", DriverMessage("a|b")) }
+                outcome = runCatching { kernel.core.requests.sendDriverMessage("Good", DriverMessage("a|b")) }
             }
             kernel.context.runUntil { outcome != null }
 

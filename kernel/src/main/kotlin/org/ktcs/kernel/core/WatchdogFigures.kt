@@ -1,0 +1,13 @@
+package org.ktcs.kernel.core
+
+/** What the deadlock watchdog has done so far (read-only; for reports and tests). */
+interface WatchdogFigures {
+    /** How many distinct stuck states (deadlocks) were found; one that shows as several cycles counts once. */
+    val detected: Int
+
+    /** How many deadlocks ended after the watchdog rerouted one of their vehicles. */
+    val resolved: Int
+
+    /** How many idle vehicles were sent out of the way of waiting ones. */
+    val idleVehiclesMoved: Int
+}
