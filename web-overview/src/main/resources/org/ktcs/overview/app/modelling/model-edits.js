@@ -7,6 +7,7 @@
 /** @typedef {{name: string, points: PointJson[], paths: PathJson[], locations: any[], locationTypes: any[], blocks: any[], vehicles: any[], visualLayout: any, properties: any[]}} ModelJson */
 
 import { nextName, pathName } from './naming.js';
+import { lineLength, pathLine } from '../path-shapes.js';
 
 /** @returns {ModelJson} a model without elements, with openTCS's default layer. */
 export function emptyModel(name = 'Unnamed model') {
@@ -139,27 +140,8 @@ export function pathLength(model, path) {
   const scaleX = model.visualLayout?.scaleX ?? 50;
   const scaleY = model.visualLayout?.scaleY ?? 50;
   const controls = (path.layout?.controlPoints ?? []).map((c) => ({ x: c.x * scaleX, y: -c.y * scaleY }));
-  const line = lineOf(path.layout?.connectionType ?? 'DIRECT', src, controls, dst);
-  let length = 0;
-  for (let i = 1; i < line.length; i += 1) length += Math.hypot(line[i].x - line[i - 1].x, line[i].y - line[i - 1].y);
-  return Math.max(1, Math.round(length));
-}
-
-function lineOf(type, src, controls, dst) {
-  if (type.startsWith('BEZIER') && controls.length > 0) {
-    const [a, b] = [controls[0], controls[controls.length - 1]];
-    const line = [];
-    for (let i = 0; i <= 64; i += 1) {
-      const t = i / 64;
-      const u = 1 - t;
-      line.push({
-        x: u * u * u * src.x + 3 * u * u * t * a.x + 3 * u * t * t * b.x + t * t * t * dst.x,
-        y: u * u * u * src.y + 3 * u * u * t * a.y + 3 * u * t * t * b.y + t * t * t * dst.y,
-      });
-    }
-    return line;
-  }
-  return type === 'DIRECT' ? [src, dst] : [src, ...controls, dst];
+  const line = pathLine(path.layout?.connectionType ?? 'DIRECT', src, controls, dst, { x: scaleX, y: scaleY }, 64);
+  return Math.max(1, Math.round(lineLength(line)));
 }
 
 /** Recomputes the length of every path (of [names] only, if given) from its geometry. */
