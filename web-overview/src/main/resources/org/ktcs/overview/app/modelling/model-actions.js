@@ -2,8 +2,9 @@
 // move by keys, add the elements that are not placed on the plant (vehicles, location types, blocks, layers).
 
 import {
-  addBlock, addLocationType, addVehicle, deleteElements, emptyModel, moveElements, pasteCopies, recomputeLengths,
+  addBlock, addLocationType, addVehicle, deleteElements, emptyModel, moveElements, recomputeLengths,
 } from './model-edits.js';
+import { pasteCopies } from './copies.js';
 
 const PUBLISH_RETRIES = 20;
 

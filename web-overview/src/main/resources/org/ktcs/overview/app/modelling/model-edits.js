@@ -152,37 +152,6 @@ export function recomputeLengths(model, names = null) {
   };
 }
 
-/**
- * Copies of the selected points and locations (with the paths between copied points and links to copied points),
- * named afresh and moved by (dx, dy). Answers the model and the copies' keys.
- */
-export function pasteCopies(model, source, keys, dx, dy) {
-  let next = model;
-  const renamed = new Map();
-  const added = new Set();
-  for (const point of source.points.filter((p) => keys.has(`point:${p.name}`))) {
-    const created = addPoint(next, point.position.x + dx, point.position.y + dy, point.layout?.layerId ?? 0);
-    next = replaceNamed(created.model, 'point', created.name, (p) => ({ ...point, name: p.name, position: p.position }));
-    renamed.set(point.name, created.name);
-    added.add(`point:${created.name}`);
-  }
-  for (const path of source.paths) {
-    const [src, dst] = [renamed.get(path.srcPointName), renamed.get(path.destPointName)];
-    if (!src || !dst) continue;
-    const created = addPath(next, src, dst);
-    if (!created) continue;
-    next = replaceNamed(created.model, 'path', created.name, (p) => ({ ...path, name: p.name, srcPointName: src, destPointName: dst }));
-    added.add(`path:${created.name}`);
-  }
-  for (const location of source.locations.filter((l) => keys.has(`location:${l.name}`))) {
-    const created = addLocation(next, location.position.x + dx, location.position.y + dy);
-    const links = location.links.filter((k) => renamed.has(k.pointName)).map((k) => ({ ...k, pointName: renamed.get(k.pointName) }));
-    next = replaceNamed(created.model, 'location', created.name, (l) => ({ ...location, name: l.name, position: l.position, links }));
-    added.add(`location:${created.name}`);
-  }
-  return { model: next, keys: added };
-}
-
 /** Renames element [from] of [kind] to [to] and every reference to it (paths' ends, links, types, block members). */
 export function renameElement(model, kind, from, to) {
   const renamed = replaceNamed(model, kind, from, (e) => ({ ...e, name: to }));
