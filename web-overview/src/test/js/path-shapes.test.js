@@ -68,3 +68,16 @@ test('path lengths are measured along the drawn line', () => {
   // Control points on the straight line leave a curve as long as the line.
   assert.equal(pathLength(model, withConnectionType(model, path, 'BEZIER_3')), Math.round(Math.hypot(6000, 3000)));
 });
+
+test('a vehicle reported on the straight line between an ELBOW path\'s ends is drawn on the dog-leg', async () => {
+  const { onDrawnPath } = await import('../../main/resources/org/ktcs/overview/app/drawn-position.js');
+  const line = pathLine('ELBOW', src, [], dst, scale);
+  const geometry = { pathsByName: new Map([['A --- B', { src, dst, line }], ['B --- C', { src: dst, dst, line: [dst, dst] }]]) };
+  // A quarter of the way along the chord is a quarter of the dog-leg's 7000 mm: 1500 up, then 250 to the right.
+  const quarter = onDrawnPath(geometry, [['B --- C'], ['A --- B']], { x: 1000, y: 750 }, 36.87);
+  assert.deepEqual({ x: quarter.x, y: quarter.y }, { x: 250, y: 1500 });
+  // Heading east on the horizontal leg: the reported chord heading turned by the leg's direction.
+  assert.ok(Math.abs(quarter.angle) < 0.01);
+  assert.equal(onDrawnPath(geometry, [['A --- B']], { x: 1000, y: 2000 }, 0), null, 'off the chord');
+  assert.equal(onDrawnPath(geometry, [], { x: 1000, y: 750 }, 0), null, 'not on an allocated path');
+});

@@ -1,6 +1,6 @@
 // The plant model as drawable geometry in model coordinates (mm, y up), with a grid index for culling and clicks.
 
-import { pathLine } from './path-shapes.js';
+import { pathLine, pointAtShare } from './path-shapes.js';
 
 /** Builds points, paths, locations and blocks of a GET /v1/plantModel answer. */
 export function buildGeometry(model) {
@@ -57,24 +57,8 @@ export function boundsOf(items) {
 
 /** The middle of a path's drawn line and the direction there. */
 export function midpointOf(path) {
-  const lengths = [];
-  let total = 0;
-  for (let i = 1; i < path.line.length; i += 1) {
-    const length = Math.hypot(path.line[i].x - path.line[i - 1].x, path.line[i].y - path.line[i - 1].y);
-    lengths.push(length);
-    total += length;
-  }
-  let remaining = total / 2;
-  for (let i = 1; i < path.line.length; i += 1) {
-    const a = path.line[i - 1];
-    const b = path.line[i];
-    if (remaining <= lengths[i - 1] || i === path.line.length - 1) {
-      const t = lengths[i - 1] === 0 ? 0 : remaining / lengths[i - 1];
-      return { x: a.x + (b.x - a.x) * t, y: a.y + (b.y - a.y) * t, angle: Math.atan2(b.y - a.y, b.x - a.x) };
-    }
-    remaining -= lengths[i - 1];
-  }
-  return { x: path.src.x, y: path.src.y, angle: 0 };
+  const middle = pointAtShare(path.line, 0.5);
+  return { x: middle.x, y: middle.y, angle: middle.heading };
 }
 
 /** Distance from (x, y) to a polyline. */

@@ -101,3 +101,22 @@ export function lineLength(line) {
   for (let i = 1; i < line.length; i += 1) length += Math.hypot(line[i].x - line[i - 1].x, line[i].y - line[i - 1].y);
   return length;
 }
+
+/**
+ * The point at [share] of [line]'s length, and the line's heading there (radians).
+ * @param {Xy[]} line
+ * @param {number} share
+ */
+export function pointAtShare(line, share) {
+  const lengths = line.slice(1).map((p, i) => Math.hypot(p.x - line[i].x, p.y - line[i].y));
+  let remaining = share * lengths.reduce((sum, l) => sum + l, 0);
+  for (let i = 1; i < line.length; i += 1) {
+    const [a, b] = [line[i - 1], line[i]];
+    if (remaining <= lengths[i - 1] || i === line.length - 1) {
+      const t = lengths[i - 1] === 0 ? 0 : Math.min(1, remaining / lengths[i - 1]);
+      return { x: a.x + (b.x - a.x) * t, y: a.y + (b.y - a.y) * t, heading: Math.atan2(b.y - a.y, b.x - a.x) };
+    }
+    remaining -= lengths[i - 1];
+  }
+  return { x: line[0].x, y: line[0].y, heading: 0 };
+}
