@@ -138,6 +138,8 @@ export class ModellingMode {
   modelChanged(model) {
     const existing = this.existingKeys(model);
     this.selection = new Set([...this.selection].filter((key) => existing.has(key)));
+    const layers = model.visualLayout?.layers ?? [];
+    if (layers.length && !layers.some((l) => l.id === this.activeLayer)) this.activeLayer = layers[0].id;
     if (this.active) {
       // The model's own layer visibility (layer and group) decides what is drawn while it is edited.
       this.plant.hiddenLayers = hiddenLayerIds(model);
