@@ -223,14 +223,16 @@ class ModellingBrowserTest : FunSpec({
         page().mouse().up()
         ((draft("$controls[2].x") as Number).toInt() > (draft("$controls[1].x") as Number).toInt()) shouldBe true
 
-        // ELBOW: drawn as an axis-parallel dog-leg between the ends, without control points.
+        // ELBOW: without control points; once its ends are no longer in line, drawn as an axis-parallel dog-leg.
         page().locator("select[name='layout.connectionType']").selectOption("ELBOW")
         draft("$controls.length") shouldBe 0
-        draft(
-            "m.plant.geometry.pathsByName.get('$path').line.every((p, i, l) => i === 0 || p.x === l[i - 1].x || p.y === l[i - 1].y)",
-        ) shouldBe true
-        draft("m.plant.geometry.pathsByName.get('$path').line.length") shouldBe 4
-        repeat(3) { page().keyboard().press("Control+z") }
+        val line = "m.plant.geometry.pathsByName.get('$path').line"
+        draft("$line.length") shouldBe 2
+        clickElement("point", "Point-0003")
+        page().keyboard().press("ArrowRight")
+        draft("$line.length") shouldBe 4
+        draft("$line.every((p, i, l) => i === 0 || p.x === l[i - 1].x || p.y === l[i - 1].y)") shouldBe true
+        repeat(4) { page().keyboard().press("Control+z") }
         draft("m.draft.model.paths.find((p) => p.name === '$path').layout.connectionType") shouldBe "DIRECT"
         page().keyboard().press("Escape")
     }

@@ -167,6 +167,6 @@ export class PropertyPanel {
       el('p', { className: 'summary' }, `${model.points.length} points · ${model.paths.length} paths · ${model.locations.length} locations`),
       el('button', { type: 'button', onclick: () => actions.recomputeLengths() }, 'Recompute all path lengths'),
       listOf('vehicle', 'Vehicles'), listOf('locationType', 'Location types'), listOf('block', 'Blocks'),
-      layersSection(this.editor));
+      layersSection(this.editor), this.propertiesView(model, (update) => this.editor.edit(update(model))));
   }
 }
