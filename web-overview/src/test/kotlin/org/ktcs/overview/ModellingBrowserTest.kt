@@ -95,6 +95,16 @@ class ModellingBrowserTest : FunSpec({
         page().mouse().click(x, y)
     }
 
+    /** Control point [index] of the list [controls] (a draft expression), in page coordinates (layout units of 50 mm). */
+    fun handlePosition(controls: String, index: Int): Pair<Double, Double> {
+        val at = page().evaluate(
+            "() => { const m = window.ktcsOverview.modelling.mode; const c = $controls[$index];" +
+                " const s = m.plant.view.toScreen(c.x * 50, -c.y * 50);" +
+                " const r = m.plant.canvas.getBoundingClientRect(); return [r.left + s.x, r.top + s.y]; }",
+        ) as List<*>
+        return (at[0] as Number).toDouble() to (at[1] as Number).toDouble()
+    }
+
     val corners = listOf(150 to 150, 450 to 150, 450 to 450, 150 to 450)
 
     browserTest("a plant drawn from an empty model by mouse and keyboard is published and runs an order to FINISHED") {
@@ -181,13 +191,7 @@ class ModellingBrowserTest : FunSpec({
         page().locator("select[name='layout.connectionType']").selectOption("BEZIER")
         val controls = "m.draft.model.paths.find((p) => p.name === '$path').layout.controlPoints"
         draft("$controls.length") shouldBe 2
-        // The first control point's handle, in page coordinates (layout units of 50 mm, y pointing down).
-        val handle = page().evaluate(
-            "() => { const m = window.ktcsOverview.modelling.mode; const c = $controls[0];" +
-                " const s = m.plant.view.toScreen(c.x * 50, -c.y * 50);" +
-                " const r = m.plant.canvas.getBoundingClientRect(); return [r.left + s.x, r.top + s.y]; }",
-        ) as List<*>
-        val (hx, hy) = handle.map { (it as Number).toDouble() }
+        val (hx, hy) = handlePosition(controls, 0)
         val before = draft("JSON.stringify($controls[0])")
 
         page().mouse().move(hx, hy)
@@ -211,17 +215,13 @@ class ModellingBrowserTest : FunSpec({
                 "Math.abs(c.y + (a.y + (b.y - a.y) * (i + 1) / 6) / 50) <= 1); })()",
         ) shouldBe true
         draft("$controls.length") shouldBe 5
-        val middle = page().evaluate(
-            "() => { const m = window.ktcsOverview.modelling.mode; const c = $controls[2];" +
-                " const s = m.plant.view.toScreen(c.x * 50, -c.y * 50);" +
-                " const r = m.plant.canvas.getBoundingClientRect(); return [r.left + s.x, r.top + s.y]; }",
-        ) as List<*>
-        val (mx, my) = middle.map { (it as Number).toDouble() }
+        val (mx, my) = handlePosition(controls, 2)
         page().mouse().move(mx, my)
         page().mouse().down()
         page().mouse().move(mx + 50, my, com.microsoft.playwright.Mouse.MoveOptions().setSteps(5))
         page().mouse().up()
         ((draft("$controls[2].x") as Number).toInt() > (draft("$controls[1].x") as Number).toInt()) shouldBe true
+        watched.screenshot("modelling-curve")
 
         // ELBOW: without control points; once its ends are no longer in line, drawn as an axis-parallel dog-leg.
         page().locator("select[name='layout.connectionType']").selectOption("ELBOW")
@@ -273,6 +273,12 @@ class ModellingBrowserTest : FunSpec({
         page().locator("select[name=selection-layer]").selectOption("1")
         draft("m.draft.model.points.filter((p) => p.layout.layerId === 1).length") shouldBe 2
         page().keyboard().press("Escape")
+        watched.screenshot("modelling-layers")
+        for (width in listOf(1024, 390)) {
+            page().setViewportSize(width, 860)
+            watched.screenshot("modelling-layers-$width")
+        }
+        page().setViewportSize(1440, 860)
         page().locator("[data-layer='1'] [name=layer-visible]").uncheck()
         draft("m.plant.isVisible(m.plant.geometry.points.get('Point-0004'))") shouldBe false
         draft("m.plant.elementsInView().points.length") shouldBe 2

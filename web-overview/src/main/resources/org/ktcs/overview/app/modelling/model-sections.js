@@ -51,7 +51,7 @@ export function layersSection(editor) {
     editor.activeLayer = added.id;
     edit(added.model);
   };
-  return el('section', { className: 'element-list layers' },
+  return el('section', { className: 'element-list layer-list' },
     el('h4', {}, 'Layers ', el('button', { type: 'button', 'data-add': 'layer', onclick: addNewLayer }, 'Add')), el('ul', {}, rows),
     el('h4', {}, 'Layer groups ', el('button', { type: 'button', 'data-add': 'layer-group', onclick: () => edit(addLayerGroup(model)) }, 'Add')), el('ul', {}, groups));
 }
