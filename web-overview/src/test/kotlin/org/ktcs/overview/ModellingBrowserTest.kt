@@ -232,12 +232,22 @@ class ModellingBrowserTest : FunSpec({
         page().keyboard().press("ArrowRight")
         draft("$line.length") shouldBe 4
         draft("$line.every((p, i, l) => i === 0 || p.x === l[i - 1].x || p.y === l[i - 1].y)") shouldBe true
+        // A vehicle reported half-way along the straight line between the ends is drawn half-way along the dog-leg.
+        draft(
+            "(() => { const p = m.plant.geometry.pathsByName.get('$path'); const l = p.line;" +
+                " const half = { x: (p.src.x + p.dst.x) / 2, y: (p.src.y + p.dst.y) / 2 };" +
+                " const at = m.plant.vehicles.positionOf({ pose: { position: half, orientationAngle: 0 }," +
+                " allocatedResources: [['$path']] });" +
+                " return Math.abs(at.x - (l[1].x + l[2].x) / 2) < 1 && Math.abs(at.y - l[1].y) < 1; })()",
+        ) shouldBe true
         repeat(4) { page().keyboard().press("Control+z") }
         draft("m.draft.model.paths.find((p) => p.name === '$path').layout.connectionType") shouldBe "DIRECT"
         page().keyboard().press("Escape")
     }
 
-    browserTest("a vehicle copied in the side bar is pasted as the next vehicle; its order types are the running one's") {
+    browserTest(
+        "a vehicle copied in the side bar is pasted as the next vehicle; its order types are the running one's",
+    ) {
         page().keyboard().press("Escape")
         page().locator(".list-vehicle button.link", Page.LocatorOptions().setHasText("Vehicle-0001")).click()
         page().keyboard().press("Control+c")
