@@ -108,15 +108,19 @@ export function lineLength(line) {
  * @param {number} share
  */
 export function pointAtShare(line, share) {
-  const lengths = line.slice(1).map((p, i) => Math.hypot(p.x - line[i].x, p.y - line[i].y));
-  let remaining = share * lengths.reduce((sum, l) => sum + l, 0);
+  // Two passes without allocating: the overview calls this for every path in view on every frame (its arrow).
+  const segment = (i) => Math.hypot(line[i].x - line[i - 1].x, line[i].y - line[i - 1].y);
+  let remaining = 0;
+  for (let i = 1; i < line.length; i += 1) remaining += segment(i);
+  remaining *= share;
   for (let i = 1; i < line.length; i += 1) {
     const [a, b] = [line[i - 1], line[i]];
-    if (remaining <= lengths[i - 1] || i === line.length - 1) {
-      const t = lengths[i - 1] === 0 ? 0 : Math.min(1, remaining / lengths[i - 1]);
+    const length = segment(i);
+    if (remaining <= length || i === line.length - 1) {
+      const t = length === 0 ? 0 : Math.min(1, remaining / length);
       return { x: a.x + (b.x - a.x) * t, y: a.y + (b.y - a.y) * t, heading: Math.atan2(b.y - a.y, b.x - a.x) };
     }
-    remaining -= lengths[i - 1];
+    remaining -= length;
   }
   return { x: line[0].x, y: line[0].y, heading: 0 };
 }
