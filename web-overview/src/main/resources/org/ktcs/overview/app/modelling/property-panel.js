@@ -72,7 +72,7 @@ export class PropertyPanel {
     let input;
     if (field.type === 'select') {
       const options = field.options(this.model);
-      input = el('select', attrs, [...new Set([String(value ?? ''), ...options])].filter(Boolean).map((o) => el('option', { value: o, selected: o === String(value) }, o)));
+      input = el('select', attrs, [...new Set([String(value ?? ''), ...options])].filter(Boolean).map((o) => el('option', { value: o, selected: o === String(value) }, field.optionLabel?.(this.model, o) ?? o)));
     } else if (field.type === 'checkbox') {
       input = el('input', { ...attrs, type: 'checkbox', checked: Boolean(value) });
     } else {
