@@ -1,4 +1,4 @@
-// Lints the overview's browser modules with ESLint's recommended rules (the type check is tsconfig.json's).
+// Lints the overview's browser modules and their unit checks (src/test/js, run by Node) with ESLint's recommended rules (the type check is tsconfig.json's).
 import js from '@eslint/js';
 import globals from 'globals';
 
@@ -7,5 +7,9 @@ export default [
   {
     files: ['src/main/resources/**/*.js'],
     languageOptions: { ecmaVersion: 2022, sourceType: 'module', globals: { ...globals.browser } },
+  },
+  {
+    files: ['src/test/js/**/*.js'],
+    languageOptions: { ecmaVersion: 2022, sourceType: 'module', globals: { ...globals.node } },
   },
 ];

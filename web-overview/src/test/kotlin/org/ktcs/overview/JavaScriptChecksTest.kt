@@ -27,6 +27,13 @@ class JavaScriptChecksTest : FunSpec({
         withClue("npm run check (in web-overview) found problems:\n${check.output}") { check.exitCode shouldBe 0 }
     }
 
+    test("the overview's JavaScript unit checks pass (path geometry, node --test src/test/js)") {
+        Npm.install(module)
+        val run = Npm.run(module, "npm", "test", "--silent")
+        withClue("npm test (in web-overview) failed:\n${run.output}") { run.exitCode shouldBe 0 }
+        run.output shouldContain "# pass"
+    }
+
     test("the type check finds a wrong type in a JSDoc-typed module") {
         Npm.install(module)
         val project = Files.createTempDirectory("ktcs-checkjs")

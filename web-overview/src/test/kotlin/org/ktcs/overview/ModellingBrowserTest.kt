@@ -95,6 +95,16 @@ class ModellingBrowserTest : FunSpec({
         page().mouse().click(x, y)
     }
 
+    /** Control point [index] of the list [controls] (a draft expression), in page coordinates (layout units of 50 mm). */
+    fun handlePosition(controls: String, index: Int): Pair<Double, Double> {
+        val at = page().evaluate(
+            "() => { const m = window.ktcsOverview.modelling.mode; const c = $controls[$index];" +
+                " const s = m.plant.view.toScreen(c.x * 50, -c.y * 50);" +
+                " const r = m.plant.canvas.getBoundingClientRect(); return [r.left + s.x, r.top + s.y]; }",
+        ) as List<*>
+        return (at[0] as Number).toDouble() to (at[1] as Number).toDouble()
+    }
+
     val corners = listOf(150 to 150, 450 to 150, 450 to 450, 150 to 450)
 
     browserTest("a plant drawn from an empty model by mouse and keyboard is published and runs an order to FINISHED") {
@@ -181,13 +191,7 @@ class ModellingBrowserTest : FunSpec({
         page().locator("select[name='layout.connectionType']").selectOption("BEZIER")
         val controls = "m.draft.model.paths.find((p) => p.name === '$path').layout.controlPoints"
         draft("$controls.length") shouldBe 2
-        // The first control point's handle, in page coordinates (layout units of 50 mm, y pointing down).
-        val handle = page().evaluate(
-            "() => { const m = window.ktcsOverview.modelling.mode; const c = $controls[0];" +
-                " const s = m.plant.view.toScreen(c.x * 50, -c.y * 50);" +
-                " const r = m.plant.canvas.getBoundingClientRect(); return [r.left + s.x, r.top + s.y]; }",
-        ) as List<*>
-        val (hx, hy) = handle.map { (it as Number).toDouble() }
+        val (hx, hy) = handlePosition(controls, 0)
         val before = draft("JSON.stringify($controls[0])")
 
         page().mouse().move(hx, hy)
@@ -201,7 +205,100 @@ class ModellingBrowserTest : FunSpec({
         draft("JSON.stringify($controls[0])") shouldBe before
         page().keyboard().press("Control+z")
         draft("$controls.length") shouldBe 0
+
+        // BEZIER_3: five control points along the straight line (layout units: x / 50, -y / 50), the middle one dragged.
+        page().locator("select[name='layout.connectionType']").selectOption("BEZIER_3")
+        val ends = "['Point-0002', 'Point-0003'].map((n) => m.draft.model.points.find((p) => p.name === n).position)"
+        draft(
+            "(() => { const [a, b] = $ends; return $controls.every((c, i) => " +
+                "Math.abs(c.x - (a.x + (b.x - a.x) * (i + 1) / 6) / 50) <= 1 && " +
+                "Math.abs(c.y + (a.y + (b.y - a.y) * (i + 1) / 6) / 50) <= 1); })()",
+        ) shouldBe true
+        draft("$controls.length") shouldBe 5
+        val (mx, my) = handlePosition(controls, 2)
+        page().mouse().move(mx, my)
+        page().mouse().down()
+        page().mouse().move(mx + 50, my, com.microsoft.playwright.Mouse.MoveOptions().setSteps(5))
+        page().mouse().up()
+        ((draft("$controls[2].x") as Number).toInt() > (draft("$controls[1].x") as Number).toInt()) shouldBe true
+        watched.screenshot("modelling-curve")
+
+        // ELBOW: without control points; once its ends are no longer in line, drawn as an axis-parallel dog-leg.
+        page().locator("select[name='layout.connectionType']").selectOption("ELBOW")
+        draft("$controls.length") shouldBe 0
+        val line = "m.plant.geometry.pathsByName.get('$path').line"
+        draft("$line.length") shouldBe 2
+        clickElement("point", "Point-0003")
+        page().keyboard().press("ArrowRight")
+        draft("$line.length") shouldBe 4
+        draft("$line.every((p, i, l) => i === 0 || p.x === l[i - 1].x || p.y === l[i - 1].y)") shouldBe true
+        // A vehicle reported half-way along the straight line between the ends is drawn half-way along the dog-leg.
+        draft(
+            "(() => { const p = m.plant.geometry.pathsByName.get('$path'); const l = p.line;" +
+                " const half = { x: (p.src.x + p.dst.x) / 2, y: (p.src.y + p.dst.y) / 2 };" +
+                " const at = m.plant.vehicles.positionOf({ pose: { position: half, orientationAngle: 0 }," +
+                " allocatedResources: [['$path']] });" +
+                " return Math.abs(at.x - (l[1].x + l[2].x) / 2) < 1 && Math.abs(at.y - l[1].y) < 1; })()",
+        ) shouldBe true
+        repeat(4) { page().keyboard().press("Control+z") }
+        draft("m.draft.model.paths.find((p) => p.name === '$path').layout.connectionType") shouldBe "DIRECT"
         page().keyboard().press("Escape")
+    }
+
+    browserTest(
+        "a vehicle copied in the side bar is pasted as the next vehicle; its order types are the running one's",
+    ) {
+        page().keyboard().press("Escape")
+        page().locator(".list-vehicle button.link", Page.LocatorOptions().setHasText("Vehicle-0001")).click()
+        page().keyboard().press("Control+c")
+        page().keyboard().press("Control+v")
+        draft("[...m.selection]") shouldBe listOf("vehicle:Vehicle-0002")
+        draft("m.draft.model.vehicles[1].properties[0].name") shouldBe "loopback:initialPosition"
+        page().keyboard().press("Control+z")
+        draft("m.draft.model.vehicles.length") shouldBe 1
+
+        // Acceptable order types belong to the running vehicle (openTCS keeps them out of the model): saved at once.
+        page().locator(".list-vehicle button.link", Page.LocatorOptions().setHasText("Vehicle-0001")).click()
+        val types = page().locator("[name=acceptable-order-types]")
+        types.fill("Transport:x")
+        assertThat(page().locator(".order-types .field-error")).containsText("whole-number priority")
+        types.fill("Transport:0, Park:1")
+        page().locator("[data-action=save-order-types]").click()
+        eventually(10.seconds) {
+            val vehicle = Json.parseToJsonElement(ktcs!!.get("/v1/vehicles/Vehicle-0001").body()).jsonObject
+            vehicle["acceptableOrderTypes"]!!.jsonArray.map { it.jsonObject["name"]!!.jsonPrimitive.content } shouldBe
+                listOf("Transport", "Park")
+        }
+        page().keyboard().press("Escape")
+    }
+
+    browserTest("a point put on a new layer disappears when the layer is hidden; undo brings it back") {
+        page().keyboard().press("Escape")
+        page().locator("[data-add=layer]").click()
+        draft("m.draft.model.visualLayout.layers.length") shouldBe 2
+        clickElement("point", "Point-0004")
+        page().keyboard().down("Shift")
+        clickElement("point", "Point-0001")
+        page().keyboard().up("Shift")
+        page().locator("select[name=selection-layer]").selectOption("1")
+        draft("m.draft.model.points.filter((p) => p.layout.layerId === 1).length") shouldBe 2
+        page().keyboard().press("Escape")
+        watched.screenshot("modelling-layers")
+        for (width in listOf(1024, 390)) {
+            page().setViewportSize(width, 860)
+            watched.screenshot("modelling-layers-$width")
+        }
+        page().setViewportSize(1440, 860)
+        page().locator("[data-layer='1'] [name=layer-visible]").uncheck()
+        draft("m.plant.isVisible(m.plant.geometry.points.get('Point-0004'))") shouldBe false
+        draft("m.plant.elementsInView().points.length") shouldBe 2
+        page().locator("[data-layer='1'] [name=layer-visible]").check()
+        page().locator("[data-layer-group='0'] [name=layer-group-visible]").uncheck()
+        draft("m.plant.elementsInView().points.length") shouldBe 0
+        repeat(5) { page().keyboard().press("Control+z") }
+        draft("m.draft.model.visualLayout.layers.length") shouldBe 1
+        draft("m.activeLayer") shouldBe 0
+        draft("m.plant.elementsInView().points.length") shouldBe 4
     }
 
     browserTest("a model with an error is refused with the error shown on the element; the kernel keeps its model") {

@@ -1,6 +1,6 @@
 // The plant model as drawable geometry in model coordinates (mm, y up), with a grid index for culling and clicks.
 
-const CURVE_SEGMENTS = 12;
+import { pathLine, pointAtShare } from './path-shapes.js';
 
 /** Builds points, paths, locations and blocks of a GET /v1/plantModel answer. */
 export function buildGeometry(model) {
@@ -34,31 +34,12 @@ function pathGeometry(path, points, layout) {
   if (!src || !dst) return null;
   // Control points are layout coordinates: model millimetres divided by the scale, with y pointing down.
   const controls = (path.layout?.controlPoints ?? []).map((c) => ({ x: c.x * layout.scaleX, y: -c.y * layout.scaleY }));
-  const line = flatten(path.layout?.connectionType ?? 'DIRECT', src, controls, dst);
+  const scale = { x: layout.scaleX, y: layout.scaleY };
+  const line = pathLine(path.layout?.connectionType ?? 'DIRECT', src, controls, dst, scale);
   return {
     kind: 'path', name: path.name, src, dst, line, locked: path.locked, layerId: path.layout?.layerId ?? 0,
     forward: path.maxVelocity > 0, reverse: path.maxReverseVelocity > 0, bounds: boundsOf(line),
   };
-}
-
-function flatten(connectionType, src, controls, dst) {
-  if (connectionType === 'BEZIER' && controls.length === 2) return cubic(src, controls[0], controls[1], dst);
-  if (connectionType === 'BEZIER' && controls.length === 1) return cubic(src, controls[0], controls[0], dst);
-  if (controls.length > 0 && connectionType !== 'DIRECT') return [src, ...controls, dst];
-  return [src, dst];
-}
-
-function cubic(a, b, c, d) {
-  const line = [];
-  for (let i = 0; i <= CURVE_SEGMENTS; i += 1) {
-    const t = i / CURVE_SEGMENTS;
-    const u = 1 - t;
-    line.push({
-      x: u * u * u * a.x + 3 * u * u * t * b.x + 3 * u * t * t * c.x + t * t * t * d.x,
-      y: u * u * u * a.y + 3 * u * u * t * b.y + 3 * u * t * t * c.y + t * t * t * d.y,
-    });
-  }
-  return line;
 }
 
 export function boundsOf(items) {
@@ -76,24 +57,8 @@ export function boundsOf(items) {
 
 /** The middle of a path's drawn line and the direction there. */
 export function midpointOf(path) {
-  const lengths = [];
-  let total = 0;
-  for (let i = 1; i < path.line.length; i += 1) {
-    const length = Math.hypot(path.line[i].x - path.line[i - 1].x, path.line[i].y - path.line[i - 1].y);
-    lengths.push(length);
-    total += length;
-  }
-  let remaining = total / 2;
-  for (let i = 1; i < path.line.length; i += 1) {
-    const a = path.line[i - 1];
-    const b = path.line[i];
-    if (remaining <= lengths[i - 1] || i === path.line.length - 1) {
-      const t = lengths[i - 1] === 0 ? 0 : remaining / lengths[i - 1];
-      return { x: a.x + (b.x - a.x) * t, y: a.y + (b.y - a.y) * t, angle: Math.atan2(b.y - a.y, b.x - a.x) };
-    }
-    remaining -= lengths[i - 1];
-  }
-  return { x: path.src.x, y: path.src.y, angle: 0 };
+  const middle = pointAtShare(path.line, 0.5);
+  return { x: middle.x, y: middle.y, angle: middle.heading };
 }
 
 /** Distance from (x, y) to a polyline. */

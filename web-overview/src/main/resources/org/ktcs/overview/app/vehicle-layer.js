@@ -1,6 +1,8 @@
 // The live part of the plant: vehicles moving smoothly between reports, their route ahead and the resources they
 // hold (allocated: solid) and have claimed (dashed).
 
+import { onDrawnPath } from './drawn-position.js';
+
 const MIN_BODY_PX = { length: 16, width: 10 };
 const MAX_GLIDE_MS = 1500;
 
@@ -56,7 +58,10 @@ export class VehicleLayer {
   positionOf(vehicle) {
     const angle = typeof vehicle.pose?.orientationAngle === 'number' ? vehicle.pose.orientationAngle : NaN;
     const precise = vehicle.pose?.position;
-    if (precise) return { x: precise.x, y: precise.y, angle };
+    if (precise) {
+      const drawn = this.geometry && onDrawnPath(this.geometry, vehicle.allocatedResources, precise, angle);
+      return drawn ?? { x: precise.x, y: precise.y, angle };
+    }
     const point = vehicle.currentPosition && this.geometry?.points.get(vehicle.currentPosition);
     return point ? { x: point.x, y: point.y, angle } : null;
   }

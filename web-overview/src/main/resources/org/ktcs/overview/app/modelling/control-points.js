@@ -2,6 +2,7 @@
 // pointing down): where they are drawn, defaults for a new connection type, and moving one by dragging its handle.
 
 import { replaceNamed } from './model-edits.js';
+import { controlsFit, defaultControlFractions } from '../path-shapes.js';
 
 const HANDLE_REACH_PX = 9;
 
@@ -23,18 +24,17 @@ export function toLayout(model, p) {
 }
 
 /**
- * [path] with the connection type [type]; a curve that needs control points and has none gets them where openTCS's
- * Model Editor puts new ones: BEZIER two, at a third and two thirds of the straight line; POLYPATH one, in its middle.
+ * [path] with the connection type [type]. Control points that do not fit the type are replaced by the ones openTCS's
+ * Model Editor gives a new curve, placed along the straight line: BEZIER two (at a third and two thirds), BEZIER_3
+ * five (at every sixth), POLYPATH one (in the middle); DIRECT, ELBOW and SLANTED use none.
  */
 export function withConnectionType(model, path, type) {
   const layout = { ...path.layout, connectionType: type };
-  const wanted = { BEZIER: [1 / 3, 2 / 3], POLYPATH: [0.5] }[type];
-  if (wanted && layout.controlPoints.length === 0) {
+  if (!controlsFit(type, layout.controlPoints?.length ?? 0)) {
     const src = model.points.find((p) => p.name === path.srcPointName)?.position;
     const dst = model.points.find((p) => p.name === path.destPointName)?.position;
-    if (src && dst) {
-      layout.controlPoints = wanted.map((t) => toLayout(model, { x: src.x + (dst.x - src.x) * t, y: src.y + (dst.y - src.y) * t }));
-    }
+    const fractions = src && dst ? defaultControlFractions(type) : [];
+    layout.controlPoints = fractions.map((t) => toLayout(model, { x: src.x + (dst.x - src.x) * t, y: src.y + (dst.y - src.y) * t }));
   }
   return { ...path, layout };
 }

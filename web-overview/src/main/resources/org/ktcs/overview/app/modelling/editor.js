@@ -11,6 +11,7 @@ import { PropertyPanel } from './property-panel.js';
 import { installModellingKeys } from './keys.js';
 import { ModelActions } from './model-actions.js';
 import { LISTS } from './model-edits.js';
+import { hiddenLayerIds } from './layer-edits.js';
 
 const VALIDATE_DELAY_MS = 300;
 
@@ -63,6 +64,7 @@ export class ModellingMode {
       this.entering = false;
     }
     this.active = true;
+    this.operatingHiddenLayers = this.plant.hiddenLayers;
     this.plant.tool = this;
     this.plant.vehicles.drawn.clear();
     this.onActiveChange(true);
@@ -78,6 +80,7 @@ export class ModellingMode {
     this.pointer.cancel();
     this.plant.tool = null;
     this.draft.writeLocalCopy();
+    this.plant.hiddenLayers = this.operatingHiddenLayers ?? new Set();
     this.onActiveChange(false);
     if (runningModel) this.plant.setModel(runningModel);
     this.plant.invalidate();
@@ -135,7 +138,13 @@ export class ModellingMode {
   modelChanged(model) {
     const existing = this.existingKeys(model);
     this.selection = new Set([...this.selection].filter((key) => existing.has(key)));
-    if (this.active) this.plant.setModel(model);
+    const layers = model.visualLayout?.layers ?? [];
+    if (layers.length && !layers.some((l) => l.id === this.activeLayer)) this.activeLayer = layers[0].id;
+    if (this.active) {
+      // The model's own layer visibility (layer and group) decides what is drawn while it is edited.
+      this.plant.hiddenLayers = hiddenLayerIds(model);
+      this.plant.setModel(model);
+    }
     this.panel.refresh();
     this.toolbar.refresh();
     this.scheduleValidation();

@@ -7,7 +7,8 @@ import { LISTS } from './model-edits.js';
 /**
  * @typedef {{key: string, label: string, type: 'text'|'number'|'select'|'checkbox'|'color'|'list',
  *   get: (e: any) => any, set?: (e: any, v: any, model: any) => any, options?: (model: any) => string[],
- *   check?: (v: any, e: any, model: any) => string|null, readOnly?: boolean}} Field
+ *   check?: (v: any, e: any, model: any) => string|null, readOnly?: boolean,
+ *   optionLabel?: (model: any, value: string) => string}} Field
  */
 const REPRESENTATIONS = ['NONE', 'DEFAULT', 'LOAD_TRANSFER_GENERIC', 'LOAD_TRANSFER_ALT_1', 'LOAD_TRANSFER_ALT_2',
   'LOAD_TRANSFER_ALT_3', 'LOAD_TRANSFER_ALT_4', 'LOAD_TRANSFER_ALT_5', 'WORKING_GENERIC', 'WORKING_ALT_1',
@@ -58,6 +59,7 @@ function list(key, label) {
 const layer = choice('layout.layerId', 'Layer', (model) => (model.visualLayout?.layers ?? []).map((l) => String(l.id)));
 layer.set = (e, v) => setIn(e, ['layout', 'layerId'], Number(v));
 layer.get = (e) => String(e.layout?.layerId ?? 0);
+layer.optionLabel = (model, id) => model.visualLayout?.layers?.find((l) => String(l.id) === id)?.name ?? id;
 
 /** @type {Field} */
 const orientation = {

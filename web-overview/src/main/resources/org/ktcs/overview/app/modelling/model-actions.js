@@ -2,8 +2,9 @@
 // move by keys, add the elements that are not placed on the plant (vehicles, location types, blocks, layers).
 
 import {
-  addBlock, addLocationType, addVehicle, deleteElements, emptyModel, moveElements, pasteCopies, recomputeLengths,
+  addBlock, addLocationType, addVehicle, deleteElements, emptyModel, moveElements, recomputeLengths,
 } from './model-edits.js';
+import { pasteCopies } from './copies.js';
 
 const PUBLISH_RETRIES = 20;
 
@@ -139,12 +140,16 @@ export class ModelActions {
     this.pastes = 0;
   }
 
-  /** Pastes copies of the copied points and locations, one grid step further each time. */
+  /** Pastes copies of the copied elements; points and locations one grid step further each time. */
   paste() {
     if (!this.clipboard) return;
     this.pastes += 1;
     const offset = Math.max(this.editor.gridSize, 500) * this.pastes;
     const pasted = pasteCopies(this.draft.model, this.clipboard.model, this.clipboard.keys, offset, -offset);
+    if (pasted.keys.size === 0) {
+      this.editor.notify('Nothing to paste: a path is copied with the points at both its ends (select them too).');
+      return;
+    }
     this.editor.edit(pasted.model, [...pasted.keys]);
   }
 

@@ -7,6 +7,7 @@
 /** @typedef {{name: string, points: PointJson[], paths: PathJson[], locations: any[], locationTypes: any[], blocks: any[], vehicles: any[], visualLayout: any, properties: any[]}} ModelJson */
 
 import { nextName, pathName } from './naming.js';
+import { lineLength, pathLine } from '../path-shapes.js';
 
 /** @returns {ModelJson} a model without elements, with openTCS's default layer. */
 export function emptyModel(name = 'Unnamed model') {
@@ -139,27 +140,8 @@ export function pathLength(model, path) {
   const scaleX = model.visualLayout?.scaleX ?? 50;
   const scaleY = model.visualLayout?.scaleY ?? 50;
   const controls = (path.layout?.controlPoints ?? []).map((c) => ({ x: c.x * scaleX, y: -c.y * scaleY }));
-  const line = lineOf(path.layout?.connectionType ?? 'DIRECT', src, controls, dst);
-  let length = 0;
-  for (let i = 1; i < line.length; i += 1) length += Math.hypot(line[i].x - line[i - 1].x, line[i].y - line[i - 1].y);
-  return Math.max(1, Math.round(length));
-}
-
-function lineOf(type, src, controls, dst) {
-  if (type.startsWith('BEZIER') && controls.length > 0) {
-    const [a, b] = [controls[0], controls[controls.length - 1]];
-    const line = [];
-    for (let i = 0; i <= 64; i += 1) {
-      const t = i / 64;
-      const u = 1 - t;
-      line.push({
-        x: u * u * u * src.x + 3 * u * u * t * a.x + 3 * u * t * t * b.x + t * t * t * dst.x,
-        y: u * u * u * src.y + 3 * u * u * t * a.y + 3 * u * t * t * b.y + t * t * t * dst.y,
-      });
-    }
-    return line;
-  }
-  return type === 'DIRECT' ? [src, dst] : [src, ...controls, dst];
+  const line = pathLine(path.layout?.connectionType ?? 'DIRECT', src, controls, dst, { x: scaleX, y: scaleY }, 64);
+  return Math.max(1, Math.round(lineLength(line)));
 }
 
 /** Recomputes the length of every path (of [names] only, if given) from its geometry. */
@@ -168,37 +150,6 @@ export function recomputeLengths(model, names = null) {
     ...model,
     paths: model.paths.map((p) => (names && !names.has(p.name) ? p : { ...p, length: pathLength(model, p) })),
   };
-}
-
-/**
- * Copies of the selected points and locations (with the paths between copied points and links to copied points),
- * named afresh and moved by (dx, dy). Answers the model and the copies' keys.
- */
-export function pasteCopies(model, source, keys, dx, dy) {
-  let next = model;
-  const renamed = new Map();
-  const added = new Set();
-  for (const point of source.points.filter((p) => keys.has(`point:${p.name}`))) {
-    const created = addPoint(next, point.position.x + dx, point.position.y + dy, point.layout?.layerId ?? 0);
-    next = replaceNamed(created.model, 'point', created.name, (p) => ({ ...point, name: p.name, position: p.position }));
-    renamed.set(point.name, created.name);
-    added.add(`point:${created.name}`);
-  }
-  for (const path of source.paths) {
-    const [src, dst] = [renamed.get(path.srcPointName), renamed.get(path.destPointName)];
-    if (!src || !dst) continue;
-    const created = addPath(next, src, dst);
-    if (!created) continue;
-    next = replaceNamed(created.model, 'path', created.name, (p) => ({ ...path, name: p.name, srcPointName: src, destPointName: dst }));
-    added.add(`path:${created.name}`);
-  }
-  for (const location of source.locations.filter((l) => keys.has(`location:${l.name}`))) {
-    const created = addLocation(next, location.position.x + dx, location.position.y + dy);
-    const links = location.links.filter((k) => renamed.has(k.pointName)).map((k) => ({ ...k, pointName: renamed.get(k.pointName) }));
-    next = replaceNamed(created.model, 'location', created.name, (l) => ({ ...location, name: l.name, position: l.position, links }));
-    added.add(`location:${created.name}`);
-  }
-  return { model: next, keys: added };
 }
 
 /** Renames element [from] of [kind] to [to] and every reference to it (paths' ends, links, types, block members). */

@@ -6,6 +6,8 @@ import { el, fill } from '../dom.js';
 import { FIELDS, nameProblem } from './element-fields.js';
 import { LISTS, renameElement, replaceNamed } from './model-edits.js';
 import { layersSection, problemsSection } from './model-sections.js';
+import { assignLayer } from './layer-edits.js';
+import { orderTypesView } from './order-types.js';
 
 const KIND_TITLES = { point: 'Point', path: 'Path', location: 'Location', locationType: 'Location type', block: 'Block', vehicle: 'Vehicle' };
 
@@ -56,6 +58,9 @@ export class PropertyPanel {
       FIELDS[kind].map((field) => this.field(field, element, (value) => change((e) => field.set(e, value, this.model)))),
       kind === 'path' ? el('button', { type: 'button', onclick: () => this.editor.actions.recomputeLengths() }, 'Recompute length') : null,
       kind === 'location' ? this.linksView(element, change) : null,
+      kind === 'vehicle' ? orderTypesView(this.editor, element.name) : null,
+      el('button', { type: 'button', 'data-action': 'duplicate', title: 'Copy and paste (Ctrl+C, Ctrl+V)',
+        onclick: () => { this.editor.actions.copy(); this.editor.actions.paste(); } }, 'Duplicate'),
       this.propertiesView(element, change));
   }
 
@@ -67,7 +72,7 @@ export class PropertyPanel {
     let input;
     if (field.type === 'select') {
       const options = field.options(this.model);
-      input = el('select', attrs, [...new Set([String(value ?? ''), ...options])].filter(Boolean).map((o) => el('option', { value: o, selected: o === String(value) }, o)));
+      input = el('select', attrs, [...new Set([String(value ?? ''), ...options])].filter(Boolean).map((o) => el('option', { value: o, selected: o === String(value) }, field.optionLabel?.(this.model, o) ?? o)));
     } else if (field.type === 'checkbox') {
       input = el('input', { ...attrs, type: 'checkbox', checked: Boolean(value) });
     } else {
@@ -127,9 +132,26 @@ export class PropertyPanel {
     const actions = this.editor.actions;
     return el('section', { className: 'properties' }, el('h3', {}, `${keys.length} elements selected`),
       el('p', { className: 'hint' }, 'Drag or use the arrow keys to move them; Ctrl+C / Ctrl+V to copy.'),
+      this.layerChoice(keys),
       el('button', { type: 'button', onclick: () => actions.add('block') }, 'New block of the selection'),
       el('button', { type: 'button', onclick: () => actions.recomputeLengths() }, 'Recompute path lengths'),
       el('button', { type: 'button', onclick: () => actions.deleteSelection() }, 'Delete'));
+  }
+
+  /** A choice of layer that puts the selected points, paths and locations on it. */
+  layerChoice(keys) {
+    const model = this.model;
+    const drawn = keys.filter((k) => /^(point|path|location):/.test(k));
+    if (drawn.length === 0) return null;
+    const layerIds = new Set(drawn.map((k) => {
+      const kind = k.slice(0, k.indexOf(':'));
+      return model[LISTS[kind]].find((e) => e.name === k.slice(kind.length + 1))?.layout?.layerId ?? 0;
+    }));
+    const current = layerIds.size === 1 ? [...layerIds][0] : null;
+    return el('label', { className: 'field field-select' }, el('span', {}, 'Layer'),
+      el('select', { name: 'selection-layer', onchange: (event) => this.editor.edit(assignLayer(model, new Set(drawn), Number(event.target.value))) },
+        current === null ? el('option', { value: '', selected: true, disabled: true }, '(several)') : null,
+        model.visualLayout.layers.map((l) => el('option', { value: String(l.id), selected: l.id === current }, l.name))));
   }
 
   modelView() {
@@ -145,6 +167,6 @@ export class PropertyPanel {
       el('p', { className: 'summary' }, `${model.points.length} points · ${model.paths.length} paths · ${model.locations.length} locations`),
       el('button', { type: 'button', onclick: () => actions.recomputeLengths() }, 'Recompute all path lengths'),
       listOf('vehicle', 'Vehicles'), listOf('locationType', 'Location types'), listOf('block', 'Blocks'),
-      layersSection(this.editor));
+      layersSection(this.editor), this.propertiesView(model, (update) => this.editor.edit(update(model))));
   }
 }
