@@ -147,7 +147,7 @@ class RerouteTest : FunSpec({
             kernel.now { scheduler.pendingAllocations()["V"] shouldBe listOf(setOf("A --- W", "W")) }
 
             var rerouted: Boolean? = null
-            kernel.now { rerouted = controllers.controller("V").reroute(setOf("B")) }
+            kernel.now { rerouted = reroute("V", avoid = setOf("B")) }
 
             rerouted shouldBe true
             kernel.now {
