@@ -71,6 +71,14 @@ class Vda5050Driver(
         else -> Explained.YES
     }
 
+    /** openTCS's `vda5050:maxDistanceBase`: no further command once the queued ones cover that many mm. */
+    override fun canAcceptNextCommand(): Boolean =
+        super.canAcceptNextCommand() && (
+            properties.maxDistanceBase == Long.MAX_VALUE ||
+                pendingCommands.sumOf { command -> command.step.path?.let(context.plantModel::path)?.length ?: 0L } <
+                properties.maxDistanceBase
+            )
+
     override fun sendCommand(command: MovementCommand) {
         if (pendingCancel != null || order?.unacknowledged != null) {
             deferred.addLast(command) // sent once the vehicle confirmed the cancellation or the previous update
@@ -253,6 +261,7 @@ class Vda5050Driver(
             LoadHandlingDevice(load.loadPosition?.takeIf { it.isNotEmpty() } ?: "LHD-$i", full = true)
         }
         if (devices != context.vehicle().loadHandlingDevices) context.reportLoadHandlingDevices(devices)
+        reportLength(loaded = devices.isNotEmpty())
         reportProperties(state)
         context.reportState(state.vehicleState())
         checkCancel(state)
@@ -288,7 +297,8 @@ class Vda5050Driver(
                 return
             }
             val actionsDone = step.actionIds.all { statuses[it]?.actionStatus == Vda.FINISHED }
-            val done = edgeDone && actionsDone &&
+            val reached = !properties.lastNodeIdRequired || state.lastNodeSequenceId >= step.node.sequenceId
+            val done = edgeDone && actionsDone && reached &&
                 (nodeDone || (properties.completion == CompletionCondition.EDGE && !final))
             if (!done) break
             current.completed(step)
@@ -331,7 +341,7 @@ class Vda5050Driver(
         rejections = 0
         val failed = pendingCommands.firstOrNull()
         cancelOrder()
-        failed?.let(::onCommandFailed)
+        failed?.let { onCommandFailed(it, reason) }
     }
 
     private fun reportProperties(state: State) {
@@ -348,6 +358,12 @@ class Vda5050Driver(
         if (context.vehicle().properties["vda5050:paused"] != paused) {
             context.setVehicleProperty("vda5050:paused", paused)
         }
+    }
+
+    /** openTCS's `vda5050:vehicleLengthLoaded`/`Unloaded`: the vehicle's length follows its load state. */
+    private fun reportLength(loaded: Boolean) {
+        val length = (if (loaded) properties.vehicleLengthLoaded else properties.vehicleLengthUnloaded) ?: return
+        if (context.vehicle().boundingBox.length != length.toLong()) context.reportLength(length.toLong())
     }
 
     private fun reportPose(x: Double, y: Double, theta: Double) {

@@ -7,6 +7,7 @@ import io.kotest.matchers.shouldBe
 import io.kotest.matchers.shouldNotBe
 import io.kotest.matchers.string.shouldContain
 import kotlinx.coroutines.delay
+import kotlinx.serialization.json.jsonArray
 import kotlinx.serialization.json.jsonObject
 import kotlinx.serialization.json.jsonPrimitive
 import org.ktcs.adapters.vda5050.protocol.Vda
@@ -79,6 +80,11 @@ class Vda5050InstantActionsTest : FunSpec({
         }
         val order = plant.get("/transportOrders/E1")
         order["properties"].toString() shouldContain "drive motor overheated"
+        // The order's history says why it failed, in the vehicle's words.
+        val history = order["history"]!!.jsonObject["entries"]!!.jsonArray.map { it.jsonObject }
+        history.last()["eventCode"]!!.jsonPrimitive.content shouldBe "tcs:history:orderReachedFinalState"
+        history.last()["supplements"]!!.jsonArray.single().jsonPrimitive.content shouldContain
+            "the vehicle reported an error: FATAL motorError: drive motor overheated"
         notifications.any { "drive motor overheated" in it } shouldBe true
 
         plant.vehicles[0].clearErrors()

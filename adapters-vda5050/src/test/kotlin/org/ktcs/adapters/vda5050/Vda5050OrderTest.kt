@@ -6,19 +6,25 @@ import io.kotest.matchers.collections.shouldBeStrictlyIncreasing
 import io.kotest.matchers.ints.shouldBeGreaterThan
 import io.kotest.matchers.shouldBe
 import kotlinx.serialization.json.jsonPrimitive
+import kotlinx.serialization.json.long
 import org.ktcs.adapters.vda5050.protocol.Vda
 import org.ktcs.api.model.LoadHandlingDevice
 import kotlin.time.Duration.Companion.seconds
 
 /** One VDA 5050 vehicle played by the simulator over the embedded broker, driven by kTCS through real orders. */
 class Vda5050OrderTest : FunSpec({
-    val plant = VdaPlant(listOf("Point-0001"))
+    val plant = VdaPlant(
+        listOf("Point-0001"),
+        vehicleProperties = mapOf("vda5050:vehicleLengthLoaded" to "1500", "vda5050:vehicleLengthUnloaded" to "900"),
+    )
+    fun length() = plant.vehicle(0)["length"]!!.jsonPrimitive.long
     afterSpec { plant.close() }
 
     test("the vehicle comes online and reports its position") {
         eventually(20.seconds) {
             plant.vehicle(0)["currentPosition"]!!.jsonPrimitive.content shouldBe "Point-0001"
             plant.vehicle(0)["state"]!!.jsonPrimitive.content shouldBe "IDLE"
+            length() shouldBe 900L // vda5050:vehicleLengthUnloaded, not the plant model's 1000
         }
     }
 
@@ -48,6 +54,7 @@ class Vda5050OrderTest : FunSpec({
         // The pick left a load on the vehicle.
         eventually(10.seconds) {
             plant.loadHandlingDevices(0) shouldBe listOf(LoadHandlingDevice("LHD-0", full = true))
+            length() shouldBe 1500L // vda5050:vehicleLengthLoaded
         }
     }
 
@@ -56,6 +63,9 @@ class Vda5050OrderTest : FunSpec({
         eventually(60.seconds) { plant.orderState("T2") shouldBe "FINISHED" }
         val drop = plant.orders.last { it.serialNumber == "SIM-1" }.nodes.last { it.released }.actions.single()
         drop.actionType shouldBe Vda.DROP
-        eventually(10.seconds) { plant.loadHandlingDevices(0) shouldBe emptyList() }
+        eventually(10.seconds) {
+            plant.loadHandlingDevices(0) shouldBe emptyList()
+            length() shouldBe 900L
+        }
     }
 })
