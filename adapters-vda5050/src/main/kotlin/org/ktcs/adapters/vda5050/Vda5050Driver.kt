@@ -55,7 +55,21 @@ class Vda5050Driver(
     private val deferred = ArrayDeque<MovementCommand>()
     private var rejections = 0
 
-    override fun onEnabled() = topics.listen(
+    // What the driver reported last: a state message repeats most of it every second, and an unchanged value is not
+    // worth a kernel task. Reset when the driver is enabled.
+    private var reportedState: VehicleState? = null
+    private var reportedEnergy = -1
+
+    @Volatile private var reportedPose: Triple<Double, Double, Double>? = null // also written by visualization
+
+    override fun onEnabled() {
+        reportedState = null
+        reportedEnergy = -1
+        reportedPose = null
+        listen()
+    }
+
+    private fun listen() = topics.listen(
         wanted = { kind -> kind != IncomingTopic.VISUALIZATION || visualizationDue() },
         received = ::received,
     )
@@ -216,7 +230,7 @@ class Vda5050Driver(
         if (previous == message.connectionState) return
         when (message.connectionState) {
             Vda.ONLINE -> {
-                context.reportState(VehicleState.IDLE)
+                reportState(VehicleState.IDLE)
                 if (previous != "UNKNOWN") {
                     context.notifyUser(NotificationLevel.INFORMATIONAL, "VDA 5050 vehicle $vehicleName is online again")
                 }
@@ -224,7 +238,7 @@ class Vda5050Driver(
             }
 
             else -> {
-                context.reportState(VehicleState.UNKNOWN)
+                reportState(VehicleState.UNKNOWN)
                 val holding = if (pendingCommands.isEmpty()) "" else KEEPS_RESOURCES
                 context.notifyUser(
                     NotificationLevel.IMPORTANT,
@@ -256,14 +270,18 @@ class Vda5050Driver(
             context.reportPosition(state.lastNodeId)
         }
         state.agvPosition?.let { reportPose(it.x, it.y, it.theta) }
-        context.reportEnergyLevel(state.batteryState.batteryCharge.toInt().coerceIn(0, 100))
+        val energy = state.batteryState.batteryCharge.toInt().coerceIn(0, 100)
+        if (energy != reportedEnergy) {
+            reportedEnergy = energy
+            context.reportEnergyLevel(energy)
+        }
         val devices = state.loads.orEmpty().mapIndexed { i, load ->
             LoadHandlingDevice(load.loadPosition?.takeIf { it.isNotEmpty() } ?: "LHD-$i", full = true)
         }
         if (devices != context.vehicle().loadHandlingDevices) context.reportLoadHandlingDevices(devices)
         reportLength(loaded = devices.isNotEmpty())
         reportProperties(state)
-        context.reportState(state.vehicleState())
+        reportState(state.vehicleState())
         checkCancel(state)
         val rejection = state.errors.firstOrNull { it.errorType in Vda.REJECTIONS }
         if (rejection != null && order != null && ++rejections > properties.maxIgnoredRejections) {
@@ -366,7 +384,16 @@ class Vda5050Driver(
         if (context.vehicle().boundingBox.length != length.toLong()) context.reportLength(length.toLong())
     }
 
+    private fun reportState(vehicleState: VehicleState) {
+        if (vehicleState == reportedState) return
+        reportedState = vehicleState
+        context.reportState(vehicleState)
+    }
+
     private fun reportPose(x: Double, y: Double, theta: Double) {
+        val pose = Triple(x, y, theta)
+        if (pose == reportedPose) return
+        reportedPose = pose
         context.reportPrecisePosition(Position((x * MM_PER_M).toLong(), (y * MM_PER_M).toLong()), Math.toDegrees(theta))
     }
 

@@ -16,7 +16,9 @@ import java.util.concurrent.TimeoutException
 
 /**
  * The MQTT broker kTCS starts for its VDA 5050 vehicles when no external one is configured: HiveMQ Community
- * Edition, in this process, listening on [bindAddress]:[port], keeping nothing on disk beyond a temporary folder.
+ * Edition, in this process, listening on [bindAddress]:[port]. Its sessions, queues and retained messages live in
+ * memory: they end with kTCS anyway, and file persistence only costs CPU per message. Only its configuration goes
+ * to a temporary folder.
  */
 class EmbeddedBroker(private val bindAddress: String, private val port: Int) : AutoCloseable {
     private val log = LoggerFactory.getLogger(EmbeddedBroker::class.java)
@@ -108,6 +110,9 @@ class EmbeddedBroker(private val bindAddress: String, private val port: Int) : A
                     <bind-address>$bindAddress</bind-address>
                 </tcp-listener>
             </listeners>
+            <persistence>
+                <mode>in-memory</mode>
+            </persistence>
             <anonymous-usage-statistics>
                 <enabled>false</enabled>
             </anonymous-usage-statistics>
