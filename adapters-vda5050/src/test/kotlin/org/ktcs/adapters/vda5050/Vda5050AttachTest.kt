@@ -40,6 +40,8 @@ class Vda5050AttachTest : FunSpec({
                 "web.bindAddress=127.0.0.1",
                 "kernel.dataDirectory=${Files.createTempDirectory("ktcs-vda-attach")}",
                 "vda5050.embeddedBroker.port=$port",
+                // Attaching is what is tested: enabled drivers would start the broker, for nothing here.
+                "kernel.enableDriversOnStart=false",
             ),
         )
         val application = KernelApplication(
