@@ -6,10 +6,8 @@ import io.kotest.matchers.nulls.shouldNotBeNull
 import io.kotest.matchers.string.shouldContain
 import org.ktcs.extension.config.ConfigException
 import org.ktcs.kernel.app.KernelApplication
-import org.ktcs.kernel.config.ConfigLoader
 import java.net.InetAddress
 import java.net.ServerSocket
-import java.nio.file.Files
 
 /**
  * An embedded broker that cannot start stops kTCS at start-up with one line naming the setting and the problem (the
@@ -17,16 +15,7 @@ import java.nio.file.Files
  */
 class Vda5050BrokerFailureTest : FunSpec({
     fun startFailure(vararg settings: String): ConfigException {
-        val config = ConfigLoader().load(
-            null,
-            emptyMap(),
-            listOf(
-                "web.port=0",
-                "web.bindAddress=127.0.0.1",
-                "kernel.dataDirectory=${Files.createTempDirectory("ktcs-vda-broker")}",
-                "persistence.durability=OFF",
-            ) + settings,
-        )
+        val config = testConfig(*settings)
         val application = KernelApplication(config, vdaDemo(listOf("Point-0001")), listOf(Vda5050Extension()))
         val error = shouldThrowAny { application.start() }
         return generateSequence(error) { it.cause }.filterIsInstance<ConfigException>().firstOrNull().shouldNotBeNull()
