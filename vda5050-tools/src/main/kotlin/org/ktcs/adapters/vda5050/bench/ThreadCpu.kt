@@ -22,11 +22,16 @@ internal class ThreadCpu(private val stats: ProcStats) {
         /** The group of a thread named [name]; names are cut to 15 characters by Linux. */
         fun groupOf(name: String): String = when {
             name == "kernel" -> "kernel"
+
             BROKER.any { name.startsWith(it) } -> "MQTT broker"
+
             CLIENT.any { name.startsWith(it) } -> "MQTT client + message checks"
+
             name.startsWith("DefaultDispatch") || name.startsWith("ktor") -> "web API"
+
             name.startsWith("C1 ") || name.startsWith("C2 ") || name.startsWith("GC") || name == "VM Thread" ->
                 "JVM (JIT, GC)"
+
             else -> "other"
         }
 
