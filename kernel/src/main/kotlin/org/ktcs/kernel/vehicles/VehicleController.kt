@@ -169,13 +169,7 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
             NotificationLevel.IMPORTANT,
             "vehicle $name failed to carry out $step of order ${command.transportOrder}$why; the order is withdrawn",
         )
-        if (reason.isBlank()) {
-            withdraw(
-                immediate = true,
-            )
-        } else {
-            withdraw(immediate = true, "vehicle $name failed $step$why")
-        }
+        withdraw(immediate = true, reason = if (reason.isBlank()) "withdrawn" else "vehicle $name failed $step$why")
     }
 
     private fun finishDriveOrder() {
