@@ -281,7 +281,9 @@ class Vda5050Driver(
         if (devices != context.vehicle().loadHandlingDevices) context.reportLoadHandlingDevices(devices)
         reportLength(loaded = devices.isNotEmpty())
         reportProperties(state)
-        reportState(state.vehicleState())
+        // The MQTT client may run the connection and state topics' callbacks on different threads: a state message sent
+        // before the connection broke can arrive after the last will, and must not make the vehicle look present.
+        reportState(if (connectionState == Vda.ONLINE) state.vehicleState() else VehicleState.UNKNOWN)
         checkCancel(state)
         val rejection = state.errors.firstOrNull { it.errorType in Vda.REJECTIONS }
         if (rejection != null && order != null && ++rejections > properties.maxIgnoredRejections) {
