@@ -85,6 +85,10 @@ class FakeDriverContext(
 
     override fun commandFailed(command: MovementCommand) = record(Report.Failed(command))
 
+    override fun reportLength(length: Long) = updateVehicle {
+        it.copy(boundingBox = it.boundingBox.copy(length = length))
+    }
+
     override fun setVehicleProperty(key: String, value: String?) = updateVehicle {
         it.copy(properties = if (value == null) it.properties - key else it.properties + (key to value))
     }

@@ -55,7 +55,21 @@ class Vda5050Driver(
     private val deferred = ArrayDeque<MovementCommand>()
     private var rejections = 0
 
-    override fun onEnabled() = topics.listen(
+    // What the driver reported last: a state message repeats most of it every second, and an unchanged value is not
+    // worth a kernel task. Reset when the driver is enabled.
+    private var reportedState: VehicleState? = null
+    private var reportedEnergy = -1
+
+    @Volatile private var reportedPose: Triple<Double, Double, Double>? = null // also written by visualization
+
+    override fun onEnabled() {
+        reportedState = null
+        reportedEnergy = -1
+        reportedPose = null
+        listen()
+    }
+
+    private fun listen() = topics.listen(
         wanted = { kind -> kind != IncomingTopic.VISUALIZATION || visualizationDue() },
         received = ::received,
     )
@@ -70,6 +84,14 @@ class Vda5050Driver(
         connectionState != Vda.ONLINE -> Explained.no("vehicle $vehicleName is $connectionState")
         else -> Explained.YES
     }
+
+    /** openTCS's `vda5050:maxDistanceBase`: no further command once the queued ones cover that many mm. */
+    override fun canAcceptNextCommand(): Boolean =
+        super.canAcceptNextCommand() && (
+            properties.maxDistanceBase == Long.MAX_VALUE ||
+                pendingCommands.sumOf { command -> command.step.path?.let(context.plantModel::path)?.length ?: 0L } <
+                properties.maxDistanceBase
+            )
 
     override fun sendCommand(command: MovementCommand) {
         if (pendingCancel != null || order?.unacknowledged != null) {
@@ -208,7 +230,7 @@ class Vda5050Driver(
         if (previous == message.connectionState) return
         when (message.connectionState) {
             Vda.ONLINE -> {
-                context.reportState(VehicleState.IDLE)
+                reportState(VehicleState.IDLE)
                 if (previous != "UNKNOWN") {
                     context.notifyUser(NotificationLevel.INFORMATIONAL, "VDA 5050 vehicle $vehicleName is online again")
                 }
@@ -216,7 +238,7 @@ class Vda5050Driver(
             }
 
             else -> {
-                context.reportState(VehicleState.UNKNOWN)
+                reportState(VehicleState.UNKNOWN)
                 val holding = if (pendingCommands.isEmpty()) "" else KEEPS_RESOURCES
                 context.notifyUser(
                     NotificationLevel.IMPORTANT,
@@ -248,13 +270,20 @@ class Vda5050Driver(
             context.reportPosition(state.lastNodeId)
         }
         state.agvPosition?.let { reportPose(it.x, it.y, it.theta) }
-        context.reportEnergyLevel(state.batteryState.batteryCharge.toInt().coerceIn(0, 100))
+        val energy = state.batteryState.batteryCharge.toInt().coerceIn(0, 100)
+        if (energy != reportedEnergy) {
+            reportedEnergy = energy
+            context.reportEnergyLevel(energy)
+        }
         val devices = state.loads.orEmpty().mapIndexed { i, load ->
             LoadHandlingDevice(load.loadPosition?.takeIf { it.isNotEmpty() } ?: "LHD-$i", full = true)
         }
         if (devices != context.vehicle().loadHandlingDevices) context.reportLoadHandlingDevices(devices)
+        reportLength(loaded = devices.isNotEmpty())
         reportProperties(state)
-        context.reportState(state.vehicleState())
+        // The MQTT client may run the connection and state topics' callbacks on different threads: a state message sent
+        // before the connection broke can arrive after the last will, and must not make the vehicle look present.
+        reportState(if (connectionState == Vda.ONLINE) state.vehicleState() else VehicleState.UNKNOWN)
         checkCancel(state)
         val rejection = state.errors.firstOrNull { it.errorType in Vda.REJECTIONS }
         if (rejection != null && order != null && ++rejections > properties.maxIgnoredRejections) {
@@ -288,7 +317,8 @@ class Vda5050Driver(
                 return
             }
             val actionsDone = step.actionIds.all { statuses[it]?.actionStatus == Vda.FINISHED }
-            val done = edgeDone && actionsDone &&
+            val reached = !properties.lastNodeIdRequired || state.lastNodeSequenceId >= step.node.sequenceId
+            val done = edgeDone && actionsDone && reached &&
                 (nodeDone || (properties.completion == CompletionCondition.EDGE && !final))
             if (!done) break
             current.completed(step)
@@ -331,7 +361,7 @@ class Vda5050Driver(
         rejections = 0
         val failed = pendingCommands.firstOrNull()
         cancelOrder()
-        failed?.let(::onCommandFailed)
+        failed?.let { onCommandFailed(it, reason) }
     }
 
     private fun reportProperties(state: State) {
@@ -350,7 +380,22 @@ class Vda5050Driver(
         }
     }
 
+    /** openTCS's `vda5050:vehicleLengthLoaded`/`Unloaded`: the vehicle's length follows its load state. */
+    private fun reportLength(loaded: Boolean) {
+        val length = (if (loaded) properties.vehicleLengthLoaded else properties.vehicleLengthUnloaded) ?: return
+        if (context.vehicle().boundingBox.length != length.toLong()) context.reportLength(length.toLong())
+    }
+
+    private fun reportState(vehicleState: VehicleState) {
+        if (vehicleState == reportedState) return
+        reportedState = vehicleState
+        context.reportState(vehicleState)
+    }
+
     private fun reportPose(x: Double, y: Double, theta: Double) {
+        val pose = Triple(x, y, theta)
+        if (pose == reportedPose) return
+        reportedPose = pose
         context.reportPrecisePosition(Position((x * MM_PER_M).toLong(), (y * MM_PER_M).toLong()), Math.toDegrees(theta))
     }
 

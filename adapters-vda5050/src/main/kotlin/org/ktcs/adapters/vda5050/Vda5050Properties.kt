@@ -31,6 +31,7 @@ data class Vda5050Properties(
     val vehicleLengthUnloaded: Int?,
     val completion: CompletionCondition,
     val maxIgnoredRejections: Int,
+    val lastNodeIdRequired: Boolean,
     val mapId: String?,
 ) {
     fun topic(setting: TopicSetting): String = "$topicPrefix/${setting.name}"
@@ -52,6 +53,7 @@ data class Vda5050Properties(
         const val LENGTH_UNLOADED = "vda5050:vehicleLengthUnloaded"
         const val COMPLETION = "vda5050:movementCommandCompletedCondition"
         const val MAX_IGNORED_REJECTIONS = "vda5050:maxIgnoredRejections"
+        const val LAST_NODE_ID_REQUIRED = "vda5050:lastNodeIdRequiredForMovementCompletion"
         const val MAP_ID = "vda5050:mapId"
 
         /** The protocol versions this driver speaks. */
@@ -97,6 +99,7 @@ data class Vda5050Properties(
                 vehicleLengthUnloaded = properties[LENGTH_UNLOADED]?.let { int(LENGTH_UNLOADED, 0, 1) },
                 completion = enum(COMPLETION, CompletionCondition.EDGE_AND_NODE),
                 maxIgnoredRejections = int(MAX_IGNORED_REJECTIONS, 0, 0),
+                lastNodeIdRequired = boolean(LAST_NODE_ID_REQUIRED, false),
                 mapId = properties[MAP_ID],
             )
         }

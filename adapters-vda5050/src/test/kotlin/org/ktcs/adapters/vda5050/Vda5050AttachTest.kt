@@ -7,8 +7,6 @@ import io.kotest.matchers.string.shouldContain
 import org.ktcs.adapters.loopback.LoopbackExtension
 import org.ktcs.kernel.app.KernelApplication
 import org.ktcs.kernel.app.PlantModelLoader
-import org.ktcs.kernel.config.ConfigLoader
-import java.nio.file.Files
 
 /**
  * Which vehicles get the VDA 5050 driver: kTCS's or openTCS's name in `tcs:preferredAdapterClass`, or
@@ -32,15 +30,10 @@ class Vda5050AttachTest : FunSpec({
             v4,
         )
         val port = freePort()
-        val config = ConfigLoader().load(
-            null,
-            emptyMap(),
-            listOf(
-                "web.port=0",
-                "web.bindAddress=127.0.0.1",
-                "kernel.dataDirectory=${Files.createTempDirectory("ktcs-vda-attach")}",
-                "vda5050.embeddedBroker.port=$port",
-            ),
+        val config = testConfig(
+            "vda5050.embeddedBroker.port=$port",
+            // Attaching is what is tested: enabled drivers would start the broker, for nothing here.
+            "kernel.enableDriversOnStart=false",
         )
         val application = KernelApplication(
             config,

@@ -32,6 +32,7 @@ class Vda5050PropertiesTest : FunSpec({
         p.completion shouldBe CompletionCondition.EDGE_AND_NODE
         p.maxIgnoredRejections shouldBe 0
         p.vehicleLengthLoaded shouldBe null
+        p.lastNodeIdRequired shouldBe false
     }
 
     test("every setting of openTCS's table is read") {
@@ -50,6 +51,9 @@ class Vda5050PropertiesTest : FunSpec({
                 "vda5050:vehicleLengthLoaded" to "1500",
                 "vda5050:movementCommandCompletedCondition" to "EDGE",
                 "vda5050:maxIgnoredRejections" to "2",
+                "vda5050:maxDistanceBase" to "5000",
+                "vda5050:vehicleLengthUnloaded" to "900",
+                "vda5050:lastNodeIdRequiredForMovementCompletion" to "true",
             ),
         )
         p.topicPrefix shouldBe "myprefix"
@@ -64,6 +68,9 @@ class Vda5050PropertiesTest : FunSpec({
         p.vehicleLengthLoaded shouldBe 1500
         p.completion shouldBe CompletionCondition.EDGE
         p.maxIgnoredRejections shouldBe 2
+        p.maxDistanceBase shouldBe 5000L
+        p.vehicleLengthUnloaded shouldBe 900
+        p.lastNodeIdRequired shouldBe true
     }
 
     test("a missing or unusable property names the vehicle and the property") {

@@ -36,6 +36,18 @@ fun vdaDemo(starts: List<String>, extra: Map<String, String> = emptyMap()): Load
     return demo.copy(model = demo.model.copy(vehicles = vehicles))
 }
 
+/** kTCS's configuration for a test: web API on a free loopback port, data in a temporary directory, and [settings]. */
+fun testConfig(vararg settings: String) = ConfigLoader().load(
+    null,
+    emptyMap(),
+    listOf(
+        "web.port=0",
+        "web.bindAddress=127.0.0.1",
+        "kernel.dataDirectory=${Files.createTempDirectory("ktcs-vda-test")}",
+        "persistence.durability=OFF",
+    ) + settings,
+)
+
 fun vdaProperties(serial: String) = mapOf(
     "vda5050:version" to "2.0",
     "vda5050:interfaceName" to "uagv",
@@ -52,23 +64,14 @@ class VdaPlant(
     brokerUrl: String? = null,
     vehicleProperties: Map<String, String> = emptyMap(),
     private val timeFactor: Double = 8.0,
-    /** Whether the test starts the simulated vehicles itself (with [simulated]) instead. */
-    simulateLater: Boolean = false,
 ) : AutoCloseable {
     val brokerPort = if (brokerUrl == null) freePort() else URI(brokerUrl).port
     val endpoint = BrokerEndpoint("127.0.0.1", brokerPort, tls = false)
     private val model = vdaDemo(starts, vehicleProperties)
-    private val config = ConfigLoader().load(
-        null,
-        emptyMap(),
-        listOfNotNull(
-            "web.bindAddress=127.0.0.1",
-            "web.port=0",
-            "kernel.dataDirectory=${Files.createTempDirectory("ktcs-vda-test")}",
-            "dispatcher.parkIdleVehicles=false",
-            "dispatcher.rechargeIdleVehicles=false",
-            if (brokerUrl == null) "vda5050.embeddedBroker.port=$brokerPort" else "vda5050.brokerUrl=$brokerUrl",
-        ),
+    private val config = testConfig(
+        "dispatcher.parkIdleVehicles=false",
+        "dispatcher.rechargeIdleVehicles=false",
+        if (brokerUrl == null) "vda5050.embeddedBroker.port=$brokerPort" else "vda5050.brokerUrl=$brokerUrl",
     )
     val application = KernelApplication(config, model, listOf(Vda5050Extension()))
     private val base = Regex("web API (http://\\S+)/v1").find(application.start())!!.groupValues[1]
@@ -88,13 +91,7 @@ class VdaPlant(
             instantActions += Vda5050Json.decodeFromString(InstantActions.serializer(), String(it))
         }.get()
     }
-    val vehicles: List<SimulatedVehicle> = if (simulateLater) {
-        emptyList()
-    } else {
-        starts.mapIndexed { i, start ->
-            simulated(i, start)
-        }
-    }
+    val vehicles: List<SimulatedVehicle> = starts.mapIndexed { i, start -> simulated(i, start) }
 
     private val running = vehicles.toMutableList()
 

@@ -66,4 +66,9 @@ public abstract class BasicVehicleDriver(
     protected fun onCommandFailed(command: MovementCommand) {
         if (sent.remove(command)) context.commandFailed(command)
     }
+
+    /** The vehicle failed to carry out [command] for [reason] (goes into the order's history); ignored if not pending. */
+    protected fun onCommandFailed(command: MovementCommand, reason: String) {
+        if (sent.remove(command)) context.commandFailed(command, reason)
+    }
 }

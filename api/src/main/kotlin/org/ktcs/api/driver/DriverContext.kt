@@ -47,6 +47,20 @@ public interface DriverContext {
     /** The vehicle could not carry out [command]; the kernel withdraws its order. */
     public fun commandFailed(command: MovementCommand)
 
+    /**
+     * The vehicle could not carry out [command] for [reason], in the vehicle's words (e.g. the error type and
+     * description it reported): the kernel withdraws its order and writes [reason] into the order's history and the
+     * operator's notification. A context that keeps no history treats it as [commandFailed] without a reason.
+     */
+    public fun commandFailed(command: MovementCommand, reason: String): Unit = commandFailed(command)
+
+    /**
+     * The vehicle's length in mm changed, e.g. with its load (openTCS's `vda5050:vehicleLengthLoaded`): the
+     * scheduler's length-respecting release of passed resources (`scheduler.resourceManagement=LENGTH_RESPECTED`)
+     * uses it from the next step on.
+     */
+    public fun reportLength(length: Long)
+
     /** Sets ([value] non-null) or removes a property of the vehicle. */
     public fun setVehicleProperty(key: String, value: String?)
 

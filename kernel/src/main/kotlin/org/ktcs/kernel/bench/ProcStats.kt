@@ -23,6 +23,16 @@ class ProcStats(private val pid: Long) {
         return matching.sumOf { cpuOf(it.resolve("stat")) ?: 0.0 }
     }
 
+    /** Every live thread of the process, by thread id: its name (as `comm`, at most 15 characters) and CPU seconds. */
+    fun threads(): Map<Long, Pair<String, Double>> {
+        val tasks = runCatching { Files.list(Path.of("/proc/$pid/task")).use { it.toList() } }.getOrDefault(emptyList())
+        return tasks.mapNotNull { task ->
+            val id = task.fileName.toString().toLongOrNull() ?: return@mapNotNull null
+            val name = read(task.resolve("comm"))?.trim() ?: return@mapNotNull null
+            id to (name to (cpuOf(task.resolve("stat")) ?: 0.0))
+        }.toMap()
+    }
+
     private fun cpuOf(stat: Path): Double? {
         val text = read(stat) ?: return null
         // Fields after the command name (which may contain spaces) start at field 3; utime is 14, stime 15.

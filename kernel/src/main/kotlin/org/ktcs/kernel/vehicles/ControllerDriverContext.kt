@@ -76,6 +76,13 @@ class ControllerDriverContext(
 
     override fun commandFailed(command: MovementCommand) = later { controller.onCommandFailed(command) }
 
+    override fun commandFailed(command: MovementCommand, reason: String) =
+        later { controller.onCommandFailed(command, reason) }
+
+    override fun reportLength(length: Long) = later {
+        env.plant.updateVehicle(vehicleName) { it.copy(boundingBox = it.boundingBox.copy(length = length)) }
+    }
+
     override fun setVehicleProperty(key: String, value: String?) = later {
         env.plant.updateVehicle(vehicleName) { it.copy(properties = it.properties.setOrRemove(key, value)) }
     }

@@ -162,13 +162,16 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
         }
     }
 
-    fun onCommandFailed(command: MovementCommand) {
+    /** The driver reports that the vehicle failed [command], for [reason] if it gave one: the order is withdrawn. */
+    fun onCommandFailed(command: MovementCommand, reason: String = "") {
+        val step = command.step.path ?: command.step.destinationPoint
+        val why = if (reason.isBlank()) "" else ": $reason"
         env.notifications.publish(
             name,
             NotificationLevel.IMPORTANT,
-            "vehicle $name failed to carry out ${command.step.path ?: command.step.destinationPoint} of order ${command.transportOrder}; the order is withdrawn",
+            "vehicle $name failed to carry out $step of order ${command.transportOrder}$why; the order is withdrawn",
         )
-        withdraw(immediate = true)
+        withdraw(immediate = true, reason = if (reason.isBlank()) "withdrawn" else "vehicle $name failed $step$why")
     }
 
     private fun finishDriveOrder() {

@@ -1,22 +1,38 @@
 package org.ktcs.adapters.vda5050.mqtt
 
 import com.hivemq.embedded.EmbeddedHiveMQ
+import org.ktcs.extension.config.ConfigException
 import org.slf4j.LoggerFactory
+import java.io.IOException
+import java.net.InetAddress
+import java.net.InetSocketAddress
+import java.net.ServerSocket
+import java.net.UnknownHostException
 import java.nio.file.Files
 import java.nio.file.Path
+import java.util.concurrent.ExecutionException
 import java.util.concurrent.TimeUnit
+import java.util.concurrent.TimeoutException
 
 /**
  * The MQTT broker kTCS starts for its VDA 5050 vehicles when no external one is configured: HiveMQ Community
- * Edition, in this process, listening on [bindAddress]:[port], keeping nothing on disk beyond a temporary folder.
+ * Edition, in this process, listening on [bindAddress]:[port]. Its sessions, queues and retained messages live in
+ * memory: they end with kTCS anyway, and file persistence only costs CPU per message. Only its configuration goes
+ * to a temporary folder.
  */
 class EmbeddedBroker(private val bindAddress: String, private val port: Int) : AutoCloseable {
     private val log = LoggerFactory.getLogger(EmbeddedBroker::class.java)
     private val home: Path = Files.createTempDirectory("ktcs-mqtt-")
     private var broker: EmbeddedHiveMQ? = null
 
+    /** Starts the broker; an address or port it cannot use is a [ConfigException] naming the setting. */
     fun start() {
-        checkPortFree()
+        try {
+            checkPortFree()
+        } catch (error: ConfigException) {
+            home.toFile().deleteRecursively()
+            throw error
+        }
         val config = Files.createDirectories(home.resolve("conf"))
         Files.writeString(config.resolve("config.xml"), configXml())
         val started = EmbeddedHiveMQ.builder()
@@ -25,31 +41,55 @@ class EmbeddedBroker(private val bindAddress: String, private val port: Int) : A
             .withExtensionsFolder(Files.createDirectories(home.resolve("extensions")))
             .withoutLoggingBootstrap()
             .build()
-        try {
+        val problem = try {
             started.start().get(START_SECONDS, TimeUnit.SECONDS)
-        } catch (error: java.util.concurrent.ExecutionException) {
+            null
+        } catch (error: ExecutionException) {
+            log.warn("embedded MQTT broker failed to start", error.cause)
+            error.cause?.message ?: error.cause?.javaClass?.simpleName
+        } catch (_: TimeoutException) {
+            "it did not start within $START_SECONDS s"
+        }
+        if (problem != null) {
             runCatching { started.close() }
-            throw IllegalStateException(
-                "the embedded MQTT broker could not start on $bindAddress:$port: " +
-                    (error.cause?.message ?: error.cause?.javaClass?.simpleName),
-                error.cause,
+            home.toFile().deleteRecursively()
+            throw ConfigException(
+                "the embedded MQTT broker could not start on $bindAddress:$port ($BIND_ADDRESS_KEY, $PORT_KEY): $problem",
             )
         }
         broker = started
         log.info("embedded MQTT broker listening on {}:{}", bindAddress, port)
     }
 
-    /** HiveMQ reports a taken port only in its log: say it here, with what to change. */
+    /**
+     * HiveMQ reports an unusable address or a taken port only in its log, and kTCS would wait for it: say here which
+     * setting to change, as a [ConfigException] that stops kTCS at start-up with that one line.
+     */
     private fun checkPortFree() {
-        try {
-            java.net.ServerSocket(port, 1, java.net.InetAddress.getByName(bindAddress)).close()
-        } catch (error: java.io.IOException) {
-            throw IllegalStateException(
-                "the embedded MQTT broker cannot listen on $bindAddress:$port (${error.message}); set " +
-                    "vda5050.embeddedBroker.port (or vda5050.brokerUrl for an external broker)",
-                error,
+        val address = try {
+            InetAddress.getByName(bindAddress)
+        } catch (error: UnknownHostException) {
+            throw ConfigException("$BIND_ADDRESS_KEY '$bindAddress' is not a known host or address: ${error.message}")
+        }
+        if (!canBind(address, 0)) {
+            throw ConfigException(
+                "$BIND_ADDRESS_KEY '$bindAddress' cannot be used: it is not an address of this machine " +
+                    "(the embedded MQTT broker listens there; 127.0.0.1 for this machine, 0.0.0.0 for every interface)",
             )
         }
+        if (!canBind(address, port)) {
+            throw ConfigException(
+                "$PORT_KEY $port cannot be used: the embedded MQTT broker cannot listen on $bindAddress:$port " +
+                    "(in use or not allowed); choose a free port, or an external broker with vda5050.brokerUrl",
+            )
+        }
+    }
+
+    private fun canBind(address: InetAddress, port: Int): Boolean = try {
+        ServerSocket().use { it.bind(InetSocketAddress(address, port), 1) }
+        true
+    } catch (_: IOException) {
+        false
     }
 
     override fun close() {
@@ -70,6 +110,9 @@ class EmbeddedBroker(private val bindAddress: String, private val port: Int) : A
                     <bind-address>$bindAddress</bind-address>
                 </tcp-listener>
             </listeners>
+            <persistence>
+                <mode>in-memory</mode>
+            </persistence>
             <anonymous-usage-statistics>
                 <enabled>false</enabled>
             </anonymous-usage-statistics>
@@ -78,5 +121,7 @@ class EmbeddedBroker(private val bindAddress: String, private val port: Int) : A
 
     private companion object {
         const val START_SECONDS = 60L
+        const val BIND_ADDRESS_KEY = "vda5050.embeddedBroker.bindAddress"
+        const val PORT_KEY = "vda5050.embeddedBroker.port"
     }
 }

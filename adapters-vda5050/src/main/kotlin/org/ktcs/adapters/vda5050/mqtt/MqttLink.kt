@@ -12,7 +12,8 @@ import java.util.concurrent.TimeUnit
 class LastWill(val topic: String, val payload: ByteArray, val qos: Int = 1, val retain: Boolean = true)
 
 /**
- * One MQTT 3.1.1 connection (HiveMQ MQTT client) that reconnects by itself and subscribes again after a reconnect.
+ * One MQTT 3.1.1 connection (HiveMQ MQTT client) that reconnects by itself (after 0.5 s, backing off to at most 5 s)
+ * and subscribes again after a reconnect.
  * Callbacks run on the client's threads. [onConnectionChange] hears `true` on every (re)connect, `false` on a loss.
  */
 class MqttLink(
@@ -34,7 +35,12 @@ class MqttLink(
         .serverHost(endpoint.host)
         .serverPort(endpoint.port)
         .let { if (endpoint.tls) it.sslWithDefaultConfig() else it }
-        .automaticReconnectWithDefaultConfig()
+        // The client's default backs off to 2 minutes; a fleet manager (and a vehicle) should be back within seconds
+        // of its broker (or network) returning.
+        .automaticReconnect()
+        .initialDelay(RECONNECT_INITIAL_MILLIS, TimeUnit.MILLISECONDS)
+        .maxDelay(RECONNECT_MAX_SECONDS, TimeUnit.SECONDS)
+        .applyAutomaticReconnect()
         .addConnectedListener { onConnectionChange(true) }
         .addDisconnectedListener { context ->
             if (!closed) {
@@ -87,5 +93,7 @@ class MqttLink(
     private companion object {
         const val KEEP_ALIVE_SECONDS = 10
         const val CLOSE_SECONDS = 5L
+        const val RECONNECT_INITIAL_MILLIS = 500L
+        const val RECONNECT_MAX_SECONDS = 5L
     }
 }

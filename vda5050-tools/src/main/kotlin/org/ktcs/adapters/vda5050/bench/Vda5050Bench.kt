@@ -27,16 +27,17 @@ import kotlin.system.exitProcess
 data class Vda5050BenchOptions(
     val vehicles: Int = 100,
     val orders: Int = 200,
-    /** The grid's side; by default as dense as issue #11's 20x20 grid with 30 vehicles. */
+    /** The grid's side; by default as dense as 100 vehicles on 40x40, on which 100 loopback vehicles finish. */
     val grid: Int? = null,
     val timeFactor: Double = 4.0,
     val timeoutSeconds: Long = 900,
 ) {
     companion object {
         const val USAGE = """usage: ktcs vda5050-bench [--vehicles N] [--orders M] [--grid G] [--time-factor F] [--timeout S]
-  Starts ./ktcs twice on a generated GxG traffic grid (default: as dense as 30 vehicles on 20x20) with N vehicles and posts the same M orders: once with VDA 5050
+  Starts ./ktcs twice on a generated GxG traffic grid (default: as dense as 100 vehicles on 40x40) with N vehicles and posts the same M orders: once with VDA 5050
   vehicles played by the simulator over the embedded broker (state 1 Hz, visualization 10 Hz), once with loopback
-  vehicles. Prints the orders finished, kTCS's CPU seconds per finished order in both runs and their ratio, and the
+  vehicles. Prints the orders finished, kTCS's CPU seconds per finished order in both runs and their ratio (with and
+  without the embedded broker's threads, which run in kTCS's process), kTCS's CPU by thread group, and the
   broker round trip (publish to receive, QoS 0) p50/p99 measured every 100 ms during the VDA 5050 run."""
 
         fun parse(args: List<String>): Vda5050BenchOptions {
@@ -69,8 +70,21 @@ data class Vda5050BenchOptions(
 }
 
 /** The figures of one run. */
-data class RunFigures(val finished: Int, val failed: Int, val cpuSeconds: Double, val wallSeconds: Double) {
-    val cpuPerOrderMillis: Double get() = if (finished == 0) Double.NaN else cpuSeconds * MILLIS / finished
+data class RunFigures(
+    val finished: Int,
+    val failed: Int,
+    val cpuSeconds: Double,
+    val wallSeconds: Double,
+    /** kTCS's CPU seconds by thread group ([ThreadCpu]), biggest first. */
+    val cpuByGroup: List<Pair<String, Double>> = emptyList(),
+) {
+    val cpuPerOrderMillis: Double get() = perOrder(cpuSeconds)
+
+    /** CPU per finished order without the embedded broker's threads. */
+    val cpuPerOrderWithoutBrokerMillis: Double
+        get() = perOrder(cpuSeconds - cpuByGroup.filter { it.first == "MQTT broker" }.sumOf { it.second })
+
+    private fun perOrder(seconds: Double) = if (finished == 0) Double.NaN else seconds * MILLIS / finished
 }
 
 /**
@@ -89,12 +103,16 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
         )
         val (vda, roundTrips) = vdaRun()
         println(line("VDA 5050", vda))
+        println(groups(vda))
         val loopback = loopbackRun()
         println(line("loopback", loopback))
+        println(groups(loopback))
         println(
-            "kernel CPU per finished order, VDA 5050 / loopback: %.2f".format(
-                vda.cpuPerOrderMillis / loopback.cpuPerOrderMillis,
-            ),
+            "kernel CPU per finished order, VDA 5050 / loopback: %.2f (without the embedded broker's threads: %.2f)"
+                .format(
+                    vda.cpuPerOrderMillis / loopback.cpuPerOrderMillis,
+                    vda.cpuPerOrderWithoutBrokerMillis / loopback.cpuPerOrderMillis,
+                ),
         )
         println(
             "broker round trip (QoS 0, %d samples): p50 %.2f ms, p99 %.2f ms, max %.2f ms".format(
@@ -117,6 +135,12 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
             figures.cpuSeconds,
             figures.cpuPerOrderMillis,
         )
+
+    private fun groups(figures: RunFigures) = "          kTCS CPU by thread: " + figures.cpuByGroup
+        .filter { it.second >= MIN_GROUP_SECONDS }
+        .joinToString { (group, seconds) ->
+            "%s %.1f s (%.1f ms/order)".format(group, seconds, seconds * MILLIS / figures.finished.coerceAtLeast(1))
+        }
 
     private fun vdaRun(): Pair<RunFigures, List<Double>> {
         val model = plant.copy(
@@ -186,6 +210,7 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
     private fun measure(ktcs: KtcsUnderTest): RunFigures {
         val stats = checkNotNull(ktcs.stats)
         val cpuStart = stats.cpuSeconds()
+        val threads = ThreadCpu(stats)
         val start = System.nanoTime()
         orders.forEach { order: BenchOrder -> ktcs.client.postOrder(order.name, order.from, order.to) }
         val deadline = start + TimeUnit.SECONDS.toNanos(options.timeoutSeconds)
@@ -197,7 +222,8 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
         }
         val cpu = stats.cpuSeconds() - cpuStart
         val wall = (System.nanoTime() - start) / NANOS_PER_SECOND
-        return RunFigures(states["FINISHED"] ?: 0, states.filterKeys { it != "FINISHED" }.values.sum(), cpu, wall)
+        val failed = states.filterKeys { it != "FINISHED" }.values.sum()
+        return RunFigures(states["FINISHED"] ?: 0, failed, cpu, wall, threads.byGroup())
     }
 
     private fun finalStates(ktcs: KtcsUnderTest): Map<String, Int> {
@@ -224,7 +250,8 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
     private companion object {
         const val SEED = 42L
         const val MIN_GRID = 10
-        const val GRID_DENSITY = 30.0 / (20 * 20)
+        const val GRID_DENSITY = 100.0 / (40 * 40)
+        const val MIN_GROUP_SECONDS = 0.05
         const val READY_SECONDS = 120L
         const val POLL_MILLIS = 1000L
         const val NANOS_PER_SECOND = 1e9

@@ -1,0 +1,45 @@
+package org.ktcs.adapters.vda5050.bench
+
+import org.ktcs.kernel.bench.ProcStats
+
+/**
+ * kTCS's CPU during a run split by who spent it, from its threads' names: the embedded broker runs in kTCS's process
+ * and counts as kTCS's CPU, and this says how much of it is the broker's. A thread that ended during the run is left
+ * out (so the groups may add up to a little less than the process's CPU).
+ */
+internal class ThreadCpu(private val stats: ProcStats) {
+    private val start = stats.threads()
+
+    /** CPU seconds per group since this was created, biggest first. */
+    fun byGroup(): List<Pair<String, Double>> = stats.threads().entries
+        .groupBy({ (_, thread) -> groupOf(thread.first) }) { (id, thread) ->
+            thread.second - (start[id]?.second ?: 0.0)
+        }
+        .mapValues { (_, seconds) -> seconds.sum() }
+        .entries.sortedByDescending { it.value }.map { it.key to it.value }
+
+    companion object {
+        /** The group of a thread named [name]; names are cut to 15 characters by Linux. */
+        fun groupOf(name: String): String = when {
+            name == "kernel" -> "kernel"
+
+            BROKER.any { name.startsWith(it) } -> "MQTT broker"
+
+            CLIENT.any { name.startsWith(it) } -> "MQTT client + message checks"
+
+            name.startsWith("DefaultDispatch") || name.startsWith("ktor") -> "web API"
+
+            name.startsWith("C1 ") || name.startsWith("C2 ") || name.startsWith("GC") || name == "VM Thread" ->
+                "JVM (JIT, GC)"
+
+            else -> "other"
+        }
+
+        // HiveMQ CE's threads (its event loops, persistence writers and timers) and the HiveMQ MQTT client's.
+        private val BROKER = listOf(
+            "hivemq-", "single-writer", "payload-persist", "Exodus", "embedded-hivemq", "scheduled-persi",
+            "extension-task", "global-traffic", "rocksdb",
+        )
+        private val CLIENT = listOf("com.hivemq.clie", "RxComputationTh", "RxCachedWorkerP", "RxSchedulerPurg")
+    }
+}
