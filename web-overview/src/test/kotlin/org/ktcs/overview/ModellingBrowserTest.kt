@@ -276,10 +276,15 @@ class ModellingBrowserTest : FunSpec({
         page().keyboard().press("Escape")
         page().locator("[data-add=layer]").click()
         draft("m.draft.model.visualLayout.layers.length") shouldBe 2
+        // Each click changes the side bar, which may resize the plant before the next position is asked for.
+        settled()
         clickElement("point", "Point-0004")
+        eventually(5.seconds) { draft("[...m.selection]") shouldBe listOf("point:Point-0004") }
+        settled()
         page().keyboard().down("Shift")
         clickElement("point", "Point-0001")
         page().keyboard().up("Shift")
+        eventually(5.seconds) { draft("m.selection.size") shouldBe 2 }
         page().locator("select[name=selection-layer]").selectOption("1")
         draft("m.draft.model.points.filter((p) => p.layout.layerId === 1).length") shouldBe 2
         page().keyboard().press("Escape")
