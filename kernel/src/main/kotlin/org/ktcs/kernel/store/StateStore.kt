@@ -115,6 +115,9 @@ class StateStore private constructor(private val connection: Connection, val des
                     checkIntegrity(statement, description)
                     statement.execute("PRAGMA journal_mode=WAL")
                     statement.execute("PRAGMA synchronous=${if (synchronous) "FULL" else "NORMAL"}")
+                    // SQLite checkpoints the WAL into the file every 1,000 pages but keeps the WAL at its largest size;
+                    // this cuts it back after a large write (a restart's recovery, a replaced model).
+                    statement.execute("PRAGMA journal_size_limit=$WAL_SIZE_LIMIT_BYTES")
                 }
             } catch (error: SQLException) {
                 connection.close()
@@ -219,6 +222,7 @@ class StateStore private constructor(private val connection: Connection, val des
         const val FETCH_SIZE = 1000
         private const val ADVISORY_LOCK = 18_180_118L
         private const val BUSY_TIMEOUT_MILLIS = 1_000
+        private const val WAL_SIZE_LIMIT_BYTES = 8L * 1024 * 1024
 
         /** What a user can do about a store kTCS refuses to start over. */
         const val RECOVER =
