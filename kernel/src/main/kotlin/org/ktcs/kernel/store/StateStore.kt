@@ -12,7 +12,13 @@ import java.sql.SQLException
  * The JDBC side of the store: opens it (creating or migrating the schema), reads all of it at start and writes
  * batches of changes, each in one transaction. Used by one thread at a time: the starting thread, then the writer.
  */
-class StateStore private constructor(private val connection: Connection, val description: String) : AutoCloseable {
+class StateStore private constructor(
+    private val connection: Connection,
+    val description: String,
+    private val flushCommits: Boolean,
+) : AutoCloseable {
+    private val embedded = connection.metaData.databaseProductName.contains("SQLite", ignoreCase = true)
+    private var flushing = flushCommits
     private val upserts = StoreTable.entries.associateWith { table ->
         connection.prepareStatement(
             "INSERT INTO ${table.sqlName} (name, body) VALUES (?, ?) ON CONFLICT (name) DO UPDATE SET body = excluded.body",
@@ -43,9 +49,13 @@ class StateStore private constructor(private val connection: Connection, val des
         }
     }
 
-    /** Writes [changes] in one transaction, in their order. */
-    fun write(changes: Collection<StoreChange>) {
+    /**
+     * Writes [changes] in one transaction, in their order; with [flush] (and a store opened to flush its commits) the
+     * commit returns only once it is on the disk. PostgreSQL flushes every commit, as configured on its server.
+     */
+    fun write(changes: Collection<StoreChange>, flush: Boolean = true) {
         try {
+            flushCommitIf(flush && flushCommits)
             changes.forEach(::stage)
             StoreTable.entries.forEach { table ->
                 upserts.getValue(table).executeBatch()
@@ -56,6 +66,19 @@ class StateStore private constructor(private val connection: Connection, val des
             runCatching { connection.rollback() }
             throw error
         }
+    }
+
+    /** SQLite's `synchronous`: FULL fsyncs the write-ahead log at each commit, NORMAL leaves that to a later one. */
+    private fun flushCommitIf(flush: Boolean) {
+        if (!embedded || flush == flushing) return
+        // SQLite refuses the change inside a transaction, and the driver keeps one open while autoCommit is off.
+        connection.autoCommit = true
+        try {
+            connection.createStatement().use { it.execute("PRAGMA synchronous=${if (flush) "FULL" else "NORMAL"}") }
+        } finally {
+            connection.autoCommit = false
+        }
+        flushing = flush
     }
 
     private fun stage(change: StoreChange) {
@@ -123,13 +146,13 @@ class StateStore private constructor(private val connection: Connection, val des
                 connection.close()
                 throw unreadable(description, error, existed)
             }
-            return open(connection, description, "jdbc:sqlite:$file", "", "", existed)
+            return open(connection, description, "jdbc:sqlite:$file", "", "", existed, synchronous)
         }
 
         /** The store at a JDBC [url] (PostgreSQL), its schema created or migrated if needed. */
         fun remote(url: String, user: String, password: String): StateStore {
             val description = "the state store at $url"
-            return open(connect(description, url, user, password, true), description, url, user, password, true)
+            return open(connect(description, url, user, password, true), description, url, user, password, true, true)
         }
 
         private fun connect(description: String, url: String, user: String, password: String, existed: Boolean) =
@@ -146,11 +169,12 @@ class StateStore private constructor(private val connection: Connection, val des
             user: String,
             password: String,
             existed: Boolean,
+            flushCommits: Boolean,
         ): StateStore = try {
             StoreSchema.ensure(connection, description) { migrate(url, user, password) }
             lockForThisKtcs(connection, description)
             connection.autoCommit = false
-            StateStore(connection, description)
+            StateStore(connection, description, flushCommits)
         } catch (error: SQLException) {
             connection.close()
             throw unreadable(description, error, existed)
