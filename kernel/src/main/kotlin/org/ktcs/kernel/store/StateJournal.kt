@@ -18,7 +18,7 @@ import kotlin.concurrent.withLock
  * durable with the next flushed commit. A write-ahead log is replayed in order, so a power cut loses at most those
  * unflushed commits at its end, never a change a client was told is committed; `kill -9` loses none of them.
  */
-class StateJournal(private val store: StateStore, private val waitForCommit: Boolean) : CommitBarrier, AutoCloseable {
+class StateJournal(private val store: StoreWriter, private val waitForCommit: Boolean) : CommitBarrier, AutoCloseable {
     private val log = LoggerFactory.getLogger(StateJournal::class.java)
     private val lock = ReentrantLock()
     private val changed = lock.newCondition()

@@ -16,7 +16,7 @@ class StateStore private constructor(
     private val connection: Connection,
     val description: String,
     private val flushCommits: Boolean,
-) : AutoCloseable {
+) : StoreWriter {
     private val embedded = connection.metaData.databaseProductName.contains("SQLite", ignoreCase = true)
     private var flushing = flushCommits
     private val upserts = StoreTable.entries.associateWith { table ->
@@ -29,13 +29,15 @@ class StateStore private constructor(
     }
 
     /**
-     * Every row of [table], in name order, as (name, JSON), handed to [chunk] [FETCH_SIZE] rows at a time: the JSON of
-     * 100,000 orders is several times the size of the orders, and must not be held all at once.
+     * Every row of [table], in the order the database stores them (no order by name: that would read a large table
+     * through its index, a page here and there, instead of from start to end), as (name, JSON), handed to [chunk]
+     * [FETCH_SIZE] rows at a time: the JSON of 100,000 orders is several times the size of the orders, and must not be
+     * held all at once.
      */
     fun rows(table: StoreTable, chunk: (List<Pair<String, String>>) -> Unit) {
         connection.createStatement().use { statement ->
             statement.fetchSize = FETCH_SIZE
-            statement.executeQuery("SELECT name, body FROM ${table.sqlName} ORDER BY name").use { result ->
+            statement.executeQuery("SELECT name, body FROM ${table.sqlName}").use { result ->
                 val rows = ArrayList<Pair<String, String>>(FETCH_SIZE)
                 while (result.next()) {
                     rows += result.getString(1) to result.getString(2)
@@ -53,7 +55,7 @@ class StateStore private constructor(
      * Writes [changes] in one transaction, in their order; with [flush] (and a store opened to flush its commits) the
      * commit returns only once it is on the disk. PostgreSQL flushes every commit, as configured on its server.
      */
-    fun write(changes: Collection<StoreChange>, flush: Boolean = true) {
+    override fun write(changes: Collection<StoreChange>, flush: Boolean) {
         try {
             flushCommitIf(flush && flushCommits)
             changes.forEach(::stage)
@@ -103,7 +105,7 @@ class StateStore private constructor(
     }
 
     /** Deletes the notifications older than the newest [keep] (their names are zero-padded sequence numbers). */
-    fun trimNotifications(newest: Long, keep: Int) {
+    override fun trimNotifications(newest: Long, keep: Int) {
         connection.prepareStatement("DELETE FROM notifications WHERE name <= ?").use {
             it.setString(1, notificationKey(newest - keep))
             it.executeUpdate()
