@@ -41,7 +41,9 @@ class StateJournal(private val store: StoreWriter, private val waitForCommit: Bo
             pending.remove(key)
             pending[key] = change
             appended++
-            changed.signal()
+            // With COMMIT the writer gathers the kernel's own changes for a moment (a client's mark ends that at once):
+            // one commit for a request's changes and the kernel's around it, not one per change.
+            if (pending.size == 1 || !waitForCommit) changed.signal()
         }
     }
 
@@ -74,7 +76,13 @@ class StateJournal(private val store: StoreWriter, private val waitForCommit: Bo
     private fun writeLoop() {
         while (true) {
             val (batch, upTo, flush) = lock.withLock {
-                while (pending.isEmpty() && flushRequested <= flushed && running) changed.await()
+                while (running && flushRequested <= flushed) {
+                    if (pending.isEmpty()) {
+                        changed.await()
+                    } else if (!waitForCommit || changed.awaitNanos(GATHER_NANOS) <= 0L) {
+                        break
+                    }
+                }
                 if (pending.isEmpty() && flushRequested <= flushed) return
                 val taken = pending
                 pending = LinkedHashMap()
@@ -127,6 +135,7 @@ class StateJournal(private val store: StoreWriter, private val waitForCommit: Bo
     companion object {
         const val NOTIFICATIONS_KEPT = 1000
         private const val FLUSHED_KEY = "lastFlush"
+        private const val GATHER_NANOS = 5_000_000L
         private const val RETRY_MILLIS = 1_000L
         private const val CLOSE_RETRIES = 5
         private const val CLOSE_TIMEOUT_MILLIS = 15_000L
