@@ -30,8 +30,12 @@ class SoakWorkload(private val options: BenchOptions, private val figures: Figur
         "kernel.dataDirectory=$data",
         "persistence.durability=COMMIT",
         "orderpool.sweepAge=${(options.keepHours * plantHourMillis).toLong()}",
-        "orderpool.sweepInterval=${(SWEEP_INTERVAL_PLANT_MILLIS / timeFactor).toLong().coerceAtLeast(MIN_SWEEP_MILLIS)}",
+        "orderpool.sweepInterval=$sweepIntervalMillis",
     )
+
+    /** Ten plant minutes between sweeps, as often as the kernel sweeps at most. */
+    private val sweepIntervalMillis: Long
+        get() = (SWEEP_INTERVAL_PLANT_MILLIS / timeFactor).toLong().coerceAtLeast(MIN_SWEEP_MILLIS)
 
     fun run(model: PlantModel, data: Path, start: () -> KtcsUnderTest) {
         figures.note(
@@ -71,7 +75,7 @@ class SoakWorkload(private val options: BenchOptions, private val figures: Figur
             }
             if (now >= end) break
             val ended = watcher.states(prefix).values.count { it in FINAL_STATES }
-            orders.next("$prefix${posted}-", (open - (posted - ended)).coerceAtLeast(0)).forEach {
+            orders.next("$prefix$posted-", (open - (posted - ended)).coerceAtLeast(0)).forEach {
                 ktcs.client.postOrder(it.name, it.from, it.to)
                 posted++
             }
@@ -116,7 +120,8 @@ class SoakWorkload(private val options: BenchOptions, private val figures: Figur
         figures.record("store, largest (MiB, db + wal)", samples.maxOf { it.storeMib })
         settled.firstOrNull()?.let { first ->
             figures.record("store once the sweep runs (MiB, plant hour ${first.hour})", first.storeMib)
-            figures.record("order rows, most once the sweep runs", settled.maxOfOrNull { it.orderRows()?.toDouble() ?: 0.0 })
+            val mostRows = settled.maxOfOrNull { it.orderRows()?.toDouble() ?: 0.0 }
+            figures.record("order rows, most once the sweep runs", mostRows)
             figures.record("RSS once the sweep runs (MiB)", first.rssMib)
             figures.record("heap after GC once the sweep runs (MiB)", first.heapMib)
         }
@@ -135,7 +140,10 @@ class SoakWorkload(private val options: BenchOptions, private val figures: Figur
             DriverManager.getConnection("jdbc:sqlite:${copy.resolve(StateStore.FILE_NAME)}").use { connection ->
                 connection.createStatement().use { statement ->
                     StoreTable.entries.associateWith { table ->
-                        statement.executeQuery("SELECT count(*) FROM ${table.sqlName}").use { it.next(); it.getLong(1) }
+                        statement.executeQuery("SELECT count(*) FROM ${table.sqlName}").use {
+                            it.next()
+                            it.getLong(1)
+                        }
                     }
                 }
             }
