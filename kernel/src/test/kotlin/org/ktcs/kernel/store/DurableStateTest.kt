@@ -90,6 +90,7 @@ class DurableStateTest : FunSpec({
                 vehicle.energyLevelThresholdSet shouldBe EnergyLevelThresholdSet(10, 80, 20, 95)
                 vehicle.acceptableOrderTypes shouldBe setOf(AcceptableOrderType("Transport", 1))
                 vehicle.envelopeKey shouldBe "wide"
+                vehicle.precisePosition shouldBe Position(1_000, 2_000)
                 vehicle.integrationLevel shouldBe IntegrationLevel.TO_BE_UTILIZED
                 notifications.recent().map { it.text } shouldContain "remember me"
             }
