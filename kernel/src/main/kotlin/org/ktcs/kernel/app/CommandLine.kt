@@ -74,7 +74,7 @@ object CommandLine {
         |       ktcs simulate [--model FILE | --grid WxH | --warehouse WxH] [--vehicles N] [--orders M] [--seed S]
         |                     [--virtual-time | --real-time] [--time-factor F] [--set key=value]...
         |                                                          benchmark the kernel with simulated vehicles
-        |       ktcs bench [demo | batch | restart] [--model FILE] [--runs N] [--url URL [--pid PID]] [--orders N] ...
+        |       ktcs bench [demo | batch | restart | soak] [--model FILE] [--runs N] [--url URL [--pid PID]] [--orders N] ...
         |                                                          measure a running kTCS through its web API
         |                                                          (ktcs bench --help lists every option)
         |       ktcs --help | --version
@@ -208,13 +208,16 @@ object CommandLine {
     }
 
     val benchUsage: String = """
-        |Usage: ktcs bench [demo | batch | restart] [options]
+        |Usage: ktcs bench [demo | batch | restart | soak] [options]
         |  demo    start-up, memory, kernel CPU per finished order (--cpu-batches), order creation with 1 and 8
         |          clients (--posts each), GET /v1/transportOrders with --pool orders (issue #12's workload)
         |  batch   --orders orders posted at once; finished/failed, CPU per order, makespan and its lower bound,
         |          assignment latency, deadlock notifications, double allocations and shared positions
         |  restart a state store with --stored-final final and --stored-open open orders; seconds until the
         |          restarted kTCS's web API answers (issue #18)
+        |  soak    --hours of plant operation in --minutes (the loopback time factor follows), durability COMMIT,
+        |          the fleet kept busy, final orders swept after --keep-hours; prints per plant hour the store's
+        |          size and rows per table, RSS, heap after GC, orders finished and swept (issue #18)
         |Options:
         |  --model FILE          plant the orders come from and the started kTCS loads (default: the demo plant)
         |  --grid WxH            a generated one-way grid plant instead of --model (as ktcs simulate --grid)
@@ -236,6 +239,9 @@ object CommandLine {
         |  --stall-timeout S     seconds without a finished order that end a run (default 60)
         |  --stored-final N      restart: final orders in the store (default 100000)
         |  --stored-open N       restart: DISPATCHABLE orders in the store (default 1000)
+        |  --hours H             soak: plant hours run (default 24)
+        |  --minutes M           soak: wall-clock minutes they take; time factor = H*60/M (default 40)
+        |  --keep-hours K        soak: plant hours a final order is kept before the sweep removes it (default 1)
     """.trimMargin()
 
     private fun parseBenchOptions(args: List<String>): BenchOptions {
@@ -244,6 +250,7 @@ object CommandLine {
             "demo" -> args.drop(1)
             "batch" -> args.drop(1).also { options = options.copy(workload = Workload.BATCH) }
             "restart" -> args.drop(1).also { options = options.copy(workload = Workload.RESTART) }
+            "soak" -> args.drop(1).also { options = options.copy(workload = Workload.SOAK) }
             else -> args
         }
         forEachOption(rest) { name, value ->
@@ -290,11 +297,20 @@ object CommandLine {
 
                 "--stored-open" -> options.copy(storedOpen = positive(name, value()))
 
+                "--hours" -> options.copy(soakHours = positiveDecimal(name, value()))
+
+                "--minutes" -> options.copy(soakMinutes = positiveDecimal(name, value()))
+
+                "--keep-hours" -> options.copy(keepHours = positiveDecimal(name, value()))
+
                 else -> throw UsageException("unknown bench option '$name' (ktcs bench --help lists them)")
             }
         }
         if (options.model != null && options.grid != null) {
             throw UsageException("give either --model or --grid, not both")
+        }
+        if (options.url != null && options.workload in setOf(Workload.RESTART, Workload.SOAK)) {
+            throw UsageException("bench ${options.workload.name.lowercase()} starts its own kTCS; not with --url")
         }
         if (options.url != null && options.grid != null) {
             throw UsageException("--grid builds a plant for a kTCS the bench starts; not with --url")

@@ -57,12 +57,16 @@ class Bench(private val options: BenchOptions, private val out: PrintStream, pri
                 }
                 return@repeat
             }
+            if (options.workload == Workload.SOAK) {
+                soak(model, modelFile, log, figures)
+                return@repeat
+            }
             open(log, modelFile).use { ktcs ->
                 val orders = BenchOrders(model, options.seed + index)
                 when (options.workload) {
                     Workload.DEMO -> DemoWorkload(options, figures).run(ktcs, orders, prefix)
 
-                    Workload.RESTART -> Unit
+                    Workload.RESTART, Workload.SOAK -> Unit
 
                     Workload.BATCH -> BatchWorkload(
                         options,
@@ -98,6 +102,26 @@ class Bench(private val options: BenchOptions, private val out: PrintStream, pri
                 }
                 err.println("ktcs bench: port $port is taken, trying ${port + 1}")
             }
+        }
+    }
+
+    private fun soak(model: PlantModel, modelFile: Path?, log: File, figures: Figures) {
+        val data = Files.createTempDirectory("ktcs-bench-soak")
+        try {
+            val soak = SoakWorkload(options, figures, out)
+            soak.run(model, data) {
+                val port = options.port.takeIf { it > 0 } ?: ServerSocket(0).use { it.localPort }
+                KtcsUnderTest.start(
+                    options.launcher,
+                    modelFile,
+                    port,
+                    soak.timeFactor,
+                    log,
+                    soak.settings(data) + options.settings,
+                )
+            }
+        } finally {
+            data.toFile().deleteRecursively()
         }
     }
 

@@ -3,7 +3,7 @@ package org.ktcs.kernel.bench
 import java.nio.file.Path
 
 /** The workloads of `ktcs bench`. */
-enum class Workload { DEMO, BATCH, RESTART }
+enum class Workload { DEMO, BATCH, RESTART, SOAK }
 
 /**
  * What `ktcs bench` runs.
@@ -22,6 +22,9 @@ enum class Workload { DEMO, BATCH, RESTART }
  * @property stallSeconds how long without a finished order ends a run.
  * @property storedFinal restart: final orders in the state store kTCS starts on.
  * @property storedOpen restart: DISPATCHABLE orders in it.
+ * @property soakHours soak: plant hours of operation.
+ * @property soakMinutes soak: wall-clock minutes they are compressed into (the loopback time factor follows).
+ * @property keepHours soak: plant hours the order-pool sweep keeps a final order.
  */
 data class BenchOptions(
     val workload: Workload = Workload.DEMO,
@@ -45,4 +48,7 @@ data class BenchOptions(
     val settings: List<String> = emptyList(),
     val storedFinal: Int = 100_000,
     val storedOpen: Int = 1_000,
+    val soakHours: Double = 24.0,
+    val soakMinutes: Double = 40.0,
+    val keepHours: Double = 1.0,
 )

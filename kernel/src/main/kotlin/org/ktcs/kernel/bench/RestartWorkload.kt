@@ -53,6 +53,7 @@ class RestartWorkload(private val options: BenchOptions, private val figures: Fi
                     batch.map { (order, final) ->
                         StoreChange.Put(StoreTable.TRANSPORT_ORDERS, order.name, stored(order, final, steps, now))
                     },
+                    flush = false,
                 )
             }
         }

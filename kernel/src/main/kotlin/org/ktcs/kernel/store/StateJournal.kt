@@ -12,15 +12,22 @@ import kotlin.concurrent.withLock
  * insertion under a lock the writer holds for a swap); the writer takes everything appended since its last commit,
  * keeps the newest change per row, and writes it in one transaction (a group commit), so that the store keeps up
  * however fast the kernel changes. A failing write is retried; until it succeeds nothing is reported committed.
+ *
+ * Only a commit that a client waits for ([mark], `persistence.durability=COMMIT`) is flushed to the disk (an fsync);
+ * the kernel's own changes (a vehicle reached a point, an order was assigned) are committed without, and become
+ * durable with the next flushed commit. A write-ahead log is replayed in order, so a power cut loses at most those
+ * unflushed commits at its end, never a change a client was told is committed; `kill -9` loses none of them.
  */
-class StateJournal(private val store: StateStore, private val waitForCommit: Boolean) : CommitBarrier, AutoCloseable {
+class StateJournal(private val store: StoreWriter, private val waitForCommit: Boolean) : CommitBarrier, AutoCloseable {
     private val log = LoggerFactory.getLogger(StateJournal::class.java)
     private val lock = ReentrantLock()
     private val changed = lock.newCondition()
     private var pending = LinkedHashMap<Pair<StoreTable, String>, StoreChange>()
     private var appended = 0L
+    private var flushRequested = 0L
+    private var flushed = 0L
     private var running = true
-    private val committed = MutableStateFlow(0L)
+    private val durable = MutableStateFlow(0L)
     private var notificationsWritten = 0L
     private val writer = thread(name = "state-store-writer", isDaemon = true) { writeLoop() }
 
@@ -34,14 +41,26 @@ class StateJournal(private val store: StateStore, private val waitForCommit: Boo
             pending.remove(key)
             pending[key] = change
             appended++
-            changed.signal()
+            // With COMMIT the writer gathers the kernel's own changes for a moment (a client's mark ends that at once):
+            // one commit for a request's changes and the kernel's around it, not one per change.
+            if (pending.size == 1 || !waitForCommit) changed.signal()
         }
     }
 
-    override fun mark(): Long = if (waitForCommit) lock.withLock { appended } else 0
+    override fun mark(): Long = if (waitForCommit) {
+        lock.withLock {
+            if (appended > flushRequested) {
+                flushRequested = appended
+                changed.signal()
+            }
+            appended
+        }
+    } else {
+        0
+    }
 
     override suspend fun awaitCommitted(mark: Long) {
-        if (committed.value < mark) committed.first { it >= mark }
+        if (durable.value < mark) durable.first { it >= mark }
     }
 
     /** Writes what is pending and stops the writer (waiting at most 15 s for a store that cannot be written). */
@@ -56,23 +75,35 @@ class StateJournal(private val store: StateStore, private val waitForCommit: Boo
 
     private fun writeLoop() {
         while (true) {
-            val (batch, upTo) = lock.withLock {
-                while (pending.isEmpty() && running) changed.await()
-                if (pending.isEmpty()) return
+            val (batch, upTo, flush) = lock.withLock {
+                while (running && flushRequested <= flushed) {
+                    if (pending.isEmpty()) {
+                        changed.await()
+                    } else if (!waitForCommit || changed.awaitNanos(GATHER_NANOS) <= 0L) {
+                        break
+                    }
+                }
+                if (pending.isEmpty() && flushRequested <= flushed) return
                 val taken = pending
                 pending = LinkedHashMap()
-                taken.values to appended
+                Triple(taken.values, appended, flushRequested > flushed)
             }
-            writeUntilDone(batch)
-            committed.value = upTo
+            // A client waits for changes the writer took (unflushed) before the client's request marked them.
+            writeUntilDone(batch.ifEmpty { listOf(flushMarker()) }, flush)
+            if (flush) {
+                flushed = upTo
+                durable.value = upTo
+            }
         }
     }
 
-    private fun writeUntilDone(batch: Collection<StoreChange>) {
+    private fun flushMarker() = StoreChange.Put(StoreTable.KERNEL_VALUES, FLUSHED_KEY, System.currentTimeMillis())
+
+    private fun writeUntilDone(batch: Collection<StoreChange>, flush: Boolean) {
         var failures = 0
         while (true) {
             try {
-                store.write(batch)
+                store.write(batch, flush)
                 trimNotifications(batch)
                 if (failures > 0) log.warn("state store writable again after {} failed attempt(s)", failures)
                 return
@@ -103,6 +134,8 @@ class StateJournal(private val store: StateStore, private val waitForCommit: Boo
 
     companion object {
         const val NOTIFICATIONS_KEPT = 1000
+        private const val FLUSHED_KEY = "lastFlush"
+        private const val GATHER_NANOS = 5_000_000L
         private const val RETRY_MILLIS = 1_000L
         private const val CLOSE_RETRIES = 5
         private const val CLOSE_TIMEOUT_MILLIS = 15_000L

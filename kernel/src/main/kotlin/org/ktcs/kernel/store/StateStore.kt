@@ -12,7 +12,13 @@ import java.sql.SQLException
  * The JDBC side of the store: opens it (creating or migrating the schema), reads all of it at start and writes
  * batches of changes, each in one transaction. Used by one thread at a time: the starting thread, then the writer.
  */
-class StateStore private constructor(private val connection: Connection, val description: String) : AutoCloseable {
+class StateStore private constructor(
+    private val connection: Connection,
+    val description: String,
+    private val flushCommits: Boolean,
+) : StoreWriter {
+    private val embedded = connection.metaData.databaseProductName.contains("SQLite", ignoreCase = true)
+    private var flushing = flushCommits
     private val upserts = StoreTable.entries.associateWith { table ->
         connection.prepareStatement(
             "INSERT INTO ${table.sqlName} (name, body) VALUES (?, ?) ON CONFLICT (name) DO UPDATE SET body = excluded.body",
@@ -23,13 +29,15 @@ class StateStore private constructor(private val connection: Connection, val des
     }
 
     /**
-     * Every row of [table], in name order, as (name, JSON), handed to [chunk] [FETCH_SIZE] rows at a time: the JSON of
-     * 100,000 orders is several times the size of the orders, and must not be held all at once.
+     * Every row of [table], in the order the database stores them (no order by name: that would read a large table
+     * through its index, a page here and there, instead of from start to end), as (name, JSON), handed to [chunk]
+     * [FETCH_SIZE] rows at a time: the JSON of 100,000 orders is several times the size of the orders, and must not be
+     * held all at once.
      */
     fun rows(table: StoreTable, chunk: (List<Pair<String, String>>) -> Unit) {
         connection.createStatement().use { statement ->
             statement.fetchSize = FETCH_SIZE
-            statement.executeQuery("SELECT name, body FROM ${table.sqlName} ORDER BY name").use { result ->
+            statement.executeQuery("SELECT name, body FROM ${table.sqlName}").use { result ->
                 val rows = ArrayList<Pair<String, String>>(FETCH_SIZE)
                 while (result.next()) {
                     rows += result.getString(1) to result.getString(2)
@@ -43,9 +51,13 @@ class StateStore private constructor(private val connection: Connection, val des
         }
     }
 
-    /** Writes [changes] in one transaction, in their order. */
-    fun write(changes: Collection<StoreChange>) {
+    /**
+     * Writes [changes] in one transaction, in their order; with [flush] (and a store opened to flush its commits) the
+     * commit returns only once it is on the disk. PostgreSQL flushes every commit, as configured on its server.
+     */
+    override fun write(changes: Collection<StoreChange>, flush: Boolean) {
         try {
+            flushCommitIf(flush && flushCommits)
             changes.forEach(::stage)
             StoreTable.entries.forEach { table ->
                 upserts.getValue(table).executeBatch()
@@ -56,6 +68,19 @@ class StateStore private constructor(private val connection: Connection, val des
             runCatching { connection.rollback() }
             throw error
         }
+    }
+
+    /** SQLite's `synchronous`: FULL fsyncs the write-ahead log at each commit, NORMAL leaves that to a later one. */
+    private fun flushCommitIf(flush: Boolean) {
+        if (!embedded || flush == flushing) return
+        // SQLite refuses the change inside a transaction, and the driver keeps one open while autoCommit is off.
+        connection.autoCommit = true
+        try {
+            connection.createStatement().use { it.execute("PRAGMA synchronous=${if (flush) "FULL" else "NORMAL"}") }
+        } finally {
+            connection.autoCommit = false
+        }
+        flushing = flush
     }
 
     private fun stage(change: StoreChange) {
@@ -80,7 +105,7 @@ class StateStore private constructor(private val connection: Connection, val des
     }
 
     /** Deletes the notifications older than the newest [keep] (their names are zero-padded sequence numbers). */
-    fun trimNotifications(newest: Long, keep: Int) {
+    override fun trimNotifications(newest: Long, keep: Int) {
         connection.prepareStatement("DELETE FROM notifications WHERE name <= ?").use {
             it.setString(1, notificationKey(newest - keep))
             it.executeUpdate()
@@ -115,18 +140,21 @@ class StateStore private constructor(private val connection: Connection, val des
                     checkIntegrity(statement, description)
                     statement.execute("PRAGMA journal_mode=WAL")
                     statement.execute("PRAGMA synchronous=${if (synchronous) "FULL" else "NORMAL"}")
+                    // SQLite checkpoints the WAL into the file every 1,000 pages but keeps the WAL at its largest size;
+                    // this cuts it back after a large write (a restart's recovery, a replaced model).
+                    statement.execute("PRAGMA journal_size_limit=$WAL_SIZE_LIMIT_BYTES")
                 }
             } catch (error: SQLException) {
                 connection.close()
                 throw unreadable(description, error, existed)
             }
-            return open(connection, description, "jdbc:sqlite:$file", "", "", existed)
+            return open(connection, description, "jdbc:sqlite:$file", "", "", existed, synchronous)
         }
 
         /** The store at a JDBC [url] (PostgreSQL), its schema created or migrated if needed. */
         fun remote(url: String, user: String, password: String): StateStore {
             val description = "the state store at $url"
-            return open(connect(description, url, user, password, true), description, url, user, password, true)
+            return open(connect(description, url, user, password, true), description, url, user, password, true, true)
         }
 
         private fun connect(description: String, url: String, user: String, password: String, existed: Boolean) =
@@ -143,11 +171,12 @@ class StateStore private constructor(private val connection: Connection, val des
             user: String,
             password: String,
             existed: Boolean,
+            flushCommits: Boolean,
         ): StateStore = try {
             StoreSchema.ensure(connection, description) { migrate(url, user, password) }
             lockForThisKtcs(connection, description)
             connection.autoCommit = false
-            StateStore(connection, description)
+            StateStore(connection, description, flushCommits)
         } catch (error: SQLException) {
             connection.close()
             throw unreadable(description, error, existed)
@@ -219,6 +248,7 @@ class StateStore private constructor(private val connection: Connection, val des
         const val FETCH_SIZE = 1000
         private const val ADVISORY_LOCK = 18_180_118L
         private const val BUSY_TIMEOUT_MILLIS = 1_000
+        private const val WAL_SIZE_LIMIT_BYTES = 8L * 1024 * 1024
 
         /** What a user can do about a store kTCS refuses to start over. */
         const val RECOVER =

@@ -46,13 +46,13 @@ data class StoredState(
             }
             return StoredState(
                 orders = read(StoreTable.TRANSPORT_ORDERS, StateCodec::order).map { it.second }
-                    .sortedBy { it.creationTime },
+                    .sortedWith(compareBy({ it.creationTime }, { it.name })),
                 sequences = read(StoreTable.ORDER_SEQUENCES, StateCodec::sequence).map { it.second }
-                    .sortedBy { it.creationTime },
+                    .sortedWith(compareBy({ it.creationTime }, { it.name })),
                 vehicles = read(StoreTable.VEHICLES, StateCodec::vehicle).map { it.second },
                 locks = read(StoreTable.PLANT_LOCKS, StateCodec::lock).toMap(),
                 notifications = read(StoreTable.NOTIFICATIONS, StateCodec::notification)
-                    .map { (name, notification) -> name.toLong() to notification },
+                    .map { (name, notification) -> name.toLong() to notification }.sortedBy { it.first },
                 names = read(StoreTable.KERNEL_VALUES) { it }.toMap()[StateRecorder.NAMES_KEY]?.let(StateCodec::names),
             )
         }

@@ -50,6 +50,8 @@ class CommandLineTest : FunSpec({
             listOf("bench", "demo", "--runs", "3", "--cpu-batches", "5,20", "--time-factor", "10"),
         ) shouldBe
             Command.Bench(BenchOptions(runs = 3, cpuBatches = listOf(5, 20), timeFactor = 10.0))
+        CommandLine.parse(listOf("bench", "soak", "--hours", "24", "--minutes", "30", "--keep-hours=2")) shouldBe
+            Command.Bench(BenchOptions(workload = Workload.SOAK, soakHours = 24.0, soakMinutes = 30.0, keepHours = 2.0))
         CommandLine.parse(listOf("bench", "--help")) shouldBe Command.BenchHelp
     }
 
@@ -71,6 +73,9 @@ class CommandLineTest : FunSpec({
             listOf("simulate2") to "unknown command 'simulate2'",
             listOf("bench", "--runs", "0") to "--runs expects a positive whole number, got '0'",
             listOf("bench", "--model", "a.xml", "--grid", "5x5") to "give either --model or --grid, not both",
+            listOf("bench", "soak", "--minutes", "0") to "--minutes expects a positive number, got '0'",
+            listOf("bench", "soak", "--url", "http://127.0.0.1:55200") to
+                "bench soak starts its own kTCS; not with --url",
             listOf("bench", "--speed", "1") to "unknown bench option '--speed' (ktcs bench --help lists them)",
         ) { (args, message) ->
             shouldThrow<UsageException> { CommandLine.parse(args) }.message shouldBe message

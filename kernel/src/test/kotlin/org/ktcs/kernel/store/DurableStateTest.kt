@@ -4,6 +4,7 @@ import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.collections.shouldNotContain
+import io.kotest.matchers.ints.shouldBeLessThanOrEqual
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.shouldNotBe
 import io.kotest.matchers.string.shouldContain
@@ -89,6 +90,7 @@ class DurableStateTest : FunSpec({
                 vehicle.energyLevelThresholdSet shouldBe EnergyLevelThresholdSet(10, 80, 20, 95)
                 vehicle.acceptableOrderTypes shouldBe setOf(AcceptableOrderType("Transport", 1))
                 vehicle.envelopeKey shouldBe "wide"
+                vehicle.precisePosition shouldBe Position(1_000, 2_000)
                 vehicle.integrationLevel shouldBe IntegrationLevel.TO_BE_UTILIZED
                 notifications.recent().map { it.text } shouldContain "remember me"
             }
@@ -173,6 +175,25 @@ class DurableStateTest : FunSpec({
             crash()
         }
         storedNames(directory, "transport_orders") shouldNotContain "Order-1"
+    }
+
+    test("the store keeps the newest 1,000 notifications, not every one ever published") {
+        val directory = tempStore()
+        val published = StateJournal.NOTIFICATIONS_KEPT + 250
+        RestartableKernel(RestartableKernel.settingsFor(directory)).run {
+            repeat(published) { index ->
+                onKernel { notifications.publish("test", NotificationLevel.INFORMATIONAL, "note $index") }
+                if (index % 100 == 99) committed()
+            }
+            crash()
+        }
+        val stored = storedNames(directory, "notifications").map { it.toLong() }
+
+        stored.size shouldBeLessThanOrEqual StateJournal.NOTIFICATIONS_KEPT + StateJournal.NOTIFICATIONS_KEPT / 10
+        stored.max() shouldBe stored.min() + stored.size - 1
+        RestartableKernel(RestartableKernel.settingsFor(directory)).use { kernel ->
+            kernel.onKernel { notifications.recent().map { it.text } } shouldContain "note ${published - 1}"
+        }
     }
 
     test("a damaged store stops the start with what is wrong and how to recover, and stays as it was") {

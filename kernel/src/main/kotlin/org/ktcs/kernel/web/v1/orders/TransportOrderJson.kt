@@ -2,24 +2,43 @@ package org.ktcs.kernel.web.v1.orders
 
 import org.ktcs.api.order.TransportOrder
 import org.ktcs.kernel.web.v1.V1Json
+import java.lang.ref.ReferenceQueue
+import java.lang.ref.WeakReference
 import java.util.concurrent.ConcurrentHashMap
 
 /**
  * Each transport order's v1 JSON, encoded once per version of the order. Orders are immutable and every change
  * replaces the pool's instance, so an entry is valid exactly while it was made from the very instance asked about;
  * listing a pool of thousands of orders then only encodes those that changed since the last request.
+ *
+ * An entry holds its order weakly and goes once the order is gone (a newer version replaced it, the sweep removed
+ * it): a client that creates orders and never lists the whole pool must not make the cache keep every order ever
+ * created.
  */
 class TransportOrderJson {
-    private class Entry(val order: TransportOrder, val bytes: ByteArray)
+    private class Entry(order: TransportOrder, val bytes: ByteArray, queue: ReferenceQueue<TransportOrder>) :
+        WeakReference<TransportOrder>(order, queue) {
+        val name: String = order.name
+    }
 
     private val entries = ConcurrentHashMap<String, Entry>()
+    private val collected = ReferenceQueue<TransportOrder>()
 
     /** [order] as `GET /transportOrders/{NAME}` answers it, UTF-8 encoded. */
     fun of(order: TransportOrder): ByteArray {
-        entries[order.name]?.takeIf { it.order === order }?.let { return it.bytes }
+        dropCollected()
+        entries[order.name]?.takeIf { it.get() === order }?.let { return it.bytes }
         val bytes = V1Json.json.encodeToString(TransportOrderDto.serializer(), order.toDto()).encodeToByteArray()
-        entries[order.name] = Entry(order, bytes)
+        entries[order.name] = Entry(order, bytes, collected)
         return bytes
+    }
+
+    /** Drops the entries whose orders were collected (unless a newer entry took the name meanwhile). */
+    private fun dropCollected() {
+        while (true) {
+            val entry = collected.poll() as? Entry ?: return
+            entries.remove(entry.name, entry)
+        }
     }
 
     /**
@@ -36,5 +55,5 @@ class TransportOrderJson {
     }
 
     /** How many orders are cached (for tests). */
-    val size: Int get() = entries.size
+    val size: Int get() = dropCollected().let { entries.size }
 }

@@ -67,6 +67,23 @@ class TransportOrderJsonTest : FunSpec({
         cache.list(emptyList(), wholePool = false).toByteArray().decodeToString() shouldBe "[]"
     }
 
+    test("orders gone from the kernel leave the cache though no one lists the whole pool") {
+        val cache = TransportOrderJson()
+        val kept = order("Kept")
+        cache.of(kept)
+        // Created and answered once each (as POST does), then swept: nothing but the cache knows them.
+        repeat(200) { cache.of(order("Swept-$it")) }
+
+        val deadline = System.nanoTime() + 10_000_000_000L
+        while (cache.size > 1 && System.nanoTime() < deadline) {
+            System.gc()
+            Thread.sleep(10)
+        }
+
+        cache.size shouldBe 1
+        cache.of(kept).decodeToString() shouldBe encoded(kept)
+    }
+
     test("a list is written to the connection part by part as exactly the bytes its Content-Length announces") {
         val cache = TransportOrderJson()
         for (orders in listOf(emptyList(), listOf(order("T1")), listOf(order("T1"), order("T2"), order("T3")))) {
