@@ -29,6 +29,10 @@ class BenchTest : FunSpec({
                 "create_1_client_client_cpu_s",
                 "create_8_clients_per_s",
                 "post_p50_ms",
+                "create_1_client_raw_per_s",
+                "create_1_client_raw_client_cpu_s",
+                "create_8_clients_raw_per_s",
+                "post_p50_raw_ms",
                 "get_orders_p50_ms",
                 "get_orders_p95_ms",
             )

@@ -5,6 +5,7 @@ import io.kotest.core.spec.style.FunSpec
 import io.kotest.datatest.withData
 import io.kotest.matchers.shouldBe
 import org.ktcs.kernel.bench.BenchOptions
+import org.ktcs.kernel.bench.ClientKind
 import org.ktcs.kernel.bench.Workload
 import java.nio.file.Path
 
@@ -50,6 +51,8 @@ class CommandLineTest : FunSpec({
             listOf("bench", "demo", "--runs", "3", "--cpu-batches", "5,20", "--time-factor", "10"),
         ) shouldBe
             Command.Bench(BenchOptions(runs = 3, cpuBatches = listOf(5, 20), timeFactor = 10.0))
+        CommandLine.parse(listOf("bench", "--client", "raw")) shouldBe
+            Command.Bench(BenchOptions(clientKinds = listOf(ClientKind.RAW)))
         CommandLine.parse(listOf("bench", "--help")) shouldBe Command.BenchHelp
     }
 
@@ -71,6 +74,7 @@ class CommandLineTest : FunSpec({
             listOf("simulate2") to "unknown command 'simulate2'",
             listOf("bench", "--runs", "0") to "--runs expects a positive whole number, got '0'",
             listOf("bench", "--model", "a.xml", "--grid", "5x5") to "give either --model or --grid, not both",
+            listOf("bench", "--client", "curl") to "--client expects jdk, raw or both separated by a comma, got 'curl'",
             listOf("bench", "--speed", "1") to "unknown bench option '--speed' (ktcs bench --help lists them)",
         ) { (args, message) ->
             shouldThrow<UsageException> { CommandLine.parse(args) }.message shouldBe message
