@@ -51,7 +51,7 @@ class RawHttpConnectionTest : FunSpec({
                 bodies.map { String(it.body) } shouldBe listOf("{\"a\"}", "abcde", "conflict")
             }
             serving.join()
-            received.lines().filter { it.startsWith("POST") || it.all(Char::isDigit) && it.isNotEmpty() } shouldBe
+            received.lines().filter { it.startsWith("POST") || (it.all(Char::isDigit) && it.isNotEmpty()) } shouldBe
                 listOf("POST /v1/o HTTP/1.1", "1", "POST /v1/o HTTP/1.1", "22", "POST /v1/o HTTP/1.1", "333")
         }
     }
