@@ -124,7 +124,6 @@ class KtcsUnderTest private constructor(
                 "web.webSocketBufferSize=$WEB_SOCKET_BUFFER",
                 // Figures stay those of the kernel alone unless a benchmark asks for the store (extraSettings win).
                 "persistence.durability=OFF",
-                "kernel.dataDirectory=${Files.createTempDirectory("ktcs-bench-data")}",
             ) + extraSettings
             val command = buildList {
                 add(launcher.toString())
