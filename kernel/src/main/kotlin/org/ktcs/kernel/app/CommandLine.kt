@@ -301,6 +301,9 @@ object CommandLine {
         if (options.model != null && options.grid != null) {
             throw UsageException("give either --model or --grid, not both")
         }
+        if (options.url?.startsWith("https:", ignoreCase = true) == true && ClientKind.RAW in options.clientKinds) {
+            throw UsageException("the raw client speaks plain HTTP: with an https --url give --client jdk")
+        }
         if (options.url != null && options.grid != null) {
             throw UsageException("--grid builds a plant for a kTCS the bench starts; not with --url")
         }

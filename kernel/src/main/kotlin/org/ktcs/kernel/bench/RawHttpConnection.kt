@@ -16,7 +16,9 @@ import java.net.URI
  * creation rate it measures is partly the client's; this one measures kTCS.
  */
 class RawHttpConnection(baseUrl: String) : AutoCloseable {
-    private val uri = URI.create(baseUrl)
+    private val uri = URI.create(baseUrl).also {
+        require(it.scheme == "http") { "the raw client speaks plain HTTP, not ${it.scheme}: use --client jdk" }
+    }
     private val socket = Socket().apply {
         tcpNoDelay = true
         connect(InetSocketAddress(uri.host, uri.port), CONNECT_TIMEOUT_MILLIS)

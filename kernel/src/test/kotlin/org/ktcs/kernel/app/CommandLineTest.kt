@@ -75,6 +75,8 @@ class CommandLineTest : FunSpec({
             listOf("bench", "--runs", "0") to "--runs expects a positive whole number, got '0'",
             listOf("bench", "--model", "a.xml", "--grid", "5x5") to "give either --model or --grid, not both",
             listOf("bench", "--client", "curl") to "--client expects jdk, raw or both separated by a comma, got 'curl'",
+            listOf("bench", "--url", "https://h:1") to
+                "the raw client speaks plain HTTP: with an https --url give --client jdk",
             listOf("bench", "--speed", "1") to "unknown bench option '--speed' (ktcs bench --help lists them)",
         ) { (args, message) ->
             shouldThrow<UsageException> { CommandLine.parse(args) }.message shouldBe message

@@ -56,6 +56,11 @@ class RawHttpConnectionTest : FunSpec({
         }
     }
 
+    test("an HTTPS kTCS is refused with the client that can talk to it") {
+        shouldThrow<IllegalArgumentException> { RawHttpConnection("https://127.0.0.1:1/v1") }.message shouldBe
+            "the raw client speaks plain HTTP, not https: use --client jdk"
+    }
+
     test("a connection closed in the middle of an answer is an error, not a short body") {
         ServerSocket(0).use { server ->
             val serving = serve(server, listOf("HTTP/1.1 200 OK\r\nContent-Length: 50\r\n\r\nshort"), StringBuilder())
