@@ -9,6 +9,7 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
         figures.note("clients", CLIENTS_NOTE)
         if (options.url == null) figures.record("launch_ready_s", ktcs.readySeconds)
         figures.record("rss_ready_mib", ktcs.stats?.rssMib())
+        unknownOrder(ktcs)
         options.cpuBatches.forEach { size -> cpuPerOrder(ktcs, orders.next("$prefix-cpu$size-", size), size) }
         options.clientKinds.forEach { kind -> creation(ktcs, orders, prefix, kind) }
         val pool = countOrders(ktcs)
@@ -74,6 +75,28 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
         figures.record("get_orders_p95_ms", quantile(latencies, P95))
     }
 
+    /** `GET` of an order that does not exist, on one keep-alive connection of an idle kTCS: latency and CPU. */
+    private fun unknownOrder(ktcs: KtcsUnderTest) {
+        if (!ktcs.client.baseUrl.startsWith("http:")) return
+        val request = RawHttpConnection.getRequest(ktcs.client.baseUrl, BenchClient.orderPath("no-such-order"))
+        RawHttpConnection(ktcs.client.baseUrl).use { connection ->
+            repeat(UNKNOWN_ORDER_WARM_UP) { connection.exchange(request) }
+            val cpuStart = ktcs.stats?.cpuSeconds()
+            val latencies = ArrayList<Double>()
+            repeat(UNKNOWN_ORDER_GETS) {
+                val start = System.nanoTime()
+                val status = connection.exchange(request).status
+                check(status == NOT_FOUND) { "GET of an unknown order answered $status, not $NOT_FOUND" }
+                latencies += (System.nanoTime() - start) / OrderPosting.NANOS_PER_MILLI
+            }
+            figures.record("get_unknown_order_p50_ms", quantile(latencies, MEDIAN))
+            val cpuEnd = ktcs.stats?.cpuSeconds()
+            if (cpuStart != null && cpuEnd != null) {
+                figures.record("get_unknown_order_cpu_ms", (cpuEnd - cpuStart) * MILLIS / UNKNOWN_ORDER_GETS)
+            }
+        }
+    }
+
     private fun countOrders(ktcs: KtcsUnderTest): Int =
         ktcs.client.get("/transportOrders")?.let { kotlinx.serialization.json.Json.parseToJsonElement(it) }
             ?.let { (it as kotlinx.serialization.json.JsonArray).size } ?: 0
@@ -86,5 +109,8 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
         private const val MILLIS = 1000.0
         private const val MEDIAN = 0.5
         private const val P95 = 0.95
+        private const val UNKNOWN_ORDER_WARM_UP = 300
+        private const val UNKNOWN_ORDER_GETS = 2000
+        private const val NOT_FOUND = 404
     }
 }

@@ -28,7 +28,7 @@ class RawHttpConnection(baseUrl: String) : AutoCloseable {
     private val output: OutputStream = socket.getOutputStream()
     private val line = StringBuilder()
 
-    /** Sends [request] (from [postRequest]) and reads the answer; returns its status code and body. */
+    /** Sends [request] (from [postRequest] or [getRequest]) and reads the answer; returns its status code and body. */
     fun exchange(request: ByteArray): Answer {
         output.write(request)
         output.flush()
@@ -98,6 +98,14 @@ class RawHttpConnection(baseUrl: String) : AutoCloseable {
         private const val BUFFER_BYTES = 16 * 1024
         private const val STATUS_PARTS = 3
         private const val HEX = 16
+
+        /** The bytes of a `GET` of [path] under [baseUrl]'s path, for a keep-alive connection. */
+        fun getRequest(baseUrl: String, path: String): ByteArray {
+            val uri = URI.create(baseUrl)
+            return "GET ${uri.rawPath}$path HTTP/1.1\r\nHost: ${uri.host}:${uri.port}\r\n\r\n".toByteArray(
+                Charsets.US_ASCII,
+            )
+        }
 
         /** The bytes of a `POST` of [body] (JSON) to [path] under [baseUrl]'s path, for a keep-alive connection. */
         fun postRequest(baseUrl: String, path: String, body: String): ByteArray {
