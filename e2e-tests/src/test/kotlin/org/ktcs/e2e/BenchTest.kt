@@ -13,12 +13,12 @@ class BenchTest : FunSpec({
 
     test("the demo workload prints start-up, memory, CPU per order, creation rates and list latency") {
         val args =
-            arrayOf("--cpu-batches", "3", "--posts", "20", "--pool", "60", "--gets", "5", "--stall-timeout", "60")
+            arrayOf("--cpu-batches", "3", "--posts", "20", "--pool", "100", "--gets", "5", "--stall-timeout", "60")
         KtcsProcess("bench", "demo", *args).use { bench ->
             bench.awaitExit(timeout = 180.seconds) shouldBe 0
             val figures = figures(bench.output())
             figures["orders_3_finished"] shouldBe "3"
-            figures["get_orders_pool"] shouldBe "60"
+            figures["get_orders_pool"] shouldBe "100"
             figures.keys shouldContainAll listOf(
                 "launch_ready_s",
                 "rss_ready_mib",
@@ -29,8 +29,14 @@ class BenchTest : FunSpec({
                 "create_1_client_client_cpu_s",
                 "create_8_clients_per_s",
                 "post_p50_ms",
+                "create_1_client_raw_per_s",
+                "create_1_client_raw_client_cpu_s",
+                "create_8_clients_raw_per_s",
+                "post_p50_raw_ms",
                 "get_orders_p50_ms",
                 "get_orders_p95_ms",
+                "get_unknown_order_p50_ms",
+                "get_unknown_order_cpu_ms",
             )
         }
     }

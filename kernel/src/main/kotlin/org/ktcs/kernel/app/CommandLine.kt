@@ -1,6 +1,7 @@
 package org.ktcs.kernel.app
 
 import org.ktcs.kernel.bench.BenchOptions
+import org.ktcs.kernel.bench.ClientKind
 import org.ktcs.kernel.bench.Workload
 import java.nio.file.Path
 
@@ -232,6 +233,8 @@ object CommandLine {
         |  --seed S              seed of the random orders (default 1)
         |  --cpu-batches N,M     demo: batch sizes for CPU per finished order (default 50,200)
         |  --posts N             demo: POSTs per creation measurement (default 500)
+        |  --client jdk,raw      demo: the clients creation is measured with, in turn (default both): jdk, the
+        |                        JDK's HttpClient; raw, a lean one (keep-alive sockets, requests encoded beforehand)
         |  --pool N              demo: orders in the pool when listing them (default 3570)
         |  --gets N              demo: GET requests timed (default 50)
         |  --orders N            batch: orders posted at once (default 200)
@@ -283,6 +286,8 @@ object CommandLine {
 
                 "--posts" -> options.copy(posts = positive(name, value()))
 
+                "--client" -> options.copy(clientKinds = value().split(',').map { clientKind(it.trim()) })
+
                 "--pool" -> options.copy(poolSize = positive(name, value()))
 
                 "--gets" -> options.copy(gets = positive(name, value()))
@@ -312,11 +317,18 @@ object CommandLine {
         if (options.url != null && options.workload in setOf(Workload.RESTART, Workload.SOAK)) {
             throw UsageException("bench ${options.workload.name.lowercase()} starts its own kTCS; not with --url")
         }
+        if (options.url?.startsWith("https:", ignoreCase = true) == true && ClientKind.RAW in options.clientKinds) {
+            throw UsageException("the raw client speaks plain HTTP: with an https --url give --client jdk")
+        }
         if (options.url != null && options.grid != null) {
             throw UsageException("--grid builds a plant for a kTCS the bench starts; not with --url")
         }
         return options
     }
+
+    private fun clientKind(text: String): ClientKind =
+        ClientKind.entries.firstOrNull { it.name.equals(text, ignoreCase = true) }
+            ?: throw UsageException("--client expects jdk, raw or both separated by a comma, got '$text'")
 
     private fun positiveDecimal(name: String, text: String): Double =
         text.toDoubleOrNull()?.takeIf { it > 0 } ?: throw UsageException("$name expects a positive number, got '$text'")

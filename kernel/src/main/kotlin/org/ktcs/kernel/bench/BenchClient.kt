@@ -23,12 +23,10 @@ class BenchClient(val baseUrl: String) {
 
     /** Creates the order `Load cargo` at [from], `Unload cargo` at [to]; returns the status code. */
     fun postOrder(name: String, from: String, to: String): Int {
-        val body = """{"destinations":[{"locationName":${quoted(from)},"operation":"$LOAD"},""" +
-            """{"locationName":${quoted(to)},"operation":"$UNLOAD"}]}"""
-        val request = HttpRequest.newBuilder(uri("/transportOrders/${encode(name)}"))
+        val request = HttpRequest.newBuilder(uri(orderPath(name)))
             .header("Content-Type", "application/json")
             .timeout(TIMEOUT)
-            .POST(HttpRequest.BodyPublishers.ofString(body))
+            .POST(HttpRequest.BodyPublishers.ofString(orderBody(from, to)))
             .build()
         val response = http.send(request, HttpResponse.BodyHandlers.discarding())
         check(response.statusCode() == 200) { "POST order $name answered ${response.statusCode()}" }
@@ -51,7 +49,7 @@ class BenchClient(val baseUrl: String) {
 
     /** The state of the transport order [name], or `null` if it is unknown or kTCS does not answer. */
     fun orderState(name: String): String? =
-        get("/transportOrders/${encode(name)}")?.let { Json.parseToJsonElement(it).jsonObject.string("state") }
+        get(orderPath(name))?.let { Json.parseToJsonElement(it).jsonObject.string("state") }
 
     /** The vehicles as `GET /vehicles` lists them, or `null` while the web API does not answer. */
     fun vehicles(): List<JsonObject>? = get("/vehicles")?.let { text ->
@@ -69,6 +67,14 @@ class BenchClient(val baseUrl: String) {
         const val LOAD = "Load cargo"
         const val UNLOAD = "Unload cargo"
         private val TIMEOUT: Duration = Duration.ofSeconds(30)
+
+        /** The path under `/v1` of the transport order [name]. */
+        fun orderPath(name: String): String = "/transportOrders/${encode(name)}"
+
+        /** The body of a `POST` creating an order that loads cargo at [from] and unloads it at [to]. */
+        fun orderBody(from: String, to: String): String =
+            """{"destinations":[{"locationName":${quoted(from)},"operation":"$LOAD"},""" +
+                """{"locationName":${quoted(to)},"operation":"$UNLOAD"}]}"""
 
         fun encode(name: String): String = URLEncoder.encode(name, Charsets.UTF_8).replace("+", "%20")
 

@@ -6,6 +6,13 @@ import java.nio.file.Path
 enum class Workload { DEMO, BATCH, RESTART, SOAK }
 
 /**
+ * The HTTP client the demo workload creates orders with: the JDK's `HttpClient` ([JDK], what a Java client of kTCS
+ * would use) or the bench's lean one ([RAW]: keep-alive sockets, requests encoded beforehand), whose own CPU per
+ * request is small enough that the rate it measures is kTCS's.
+ */
+enum class ClientKind { JDK, RAW }
+
+/**
  * What `ktcs bench` runs.
  *
  * @property url a running kTCS to measure; `null` starts [launcher] for each run.
@@ -16,6 +23,7 @@ enum class Workload { DEMO, BATCH, RESTART, SOAK }
  * @property vehicles the started kTCS's fleet (default: the model's vehicles), each placed on a point of its own.
  * @property cpuBatches sizes of the batches whose kernel CPU per finished order the demo workload measures.
  * @property posts orders each order-creation measurement posts.
+ * @property clientKinds the clients order creation is measured with, each in turn.
  * @property poolSize orders in the pool when the demo workload lists them.
  * @property gets `GET /v1/transportOrders` requests timed.
  * @property orders orders the batch workload posts at once.
@@ -40,6 +48,7 @@ data class BenchOptions(
     val timeFactor: Double = 100.0,
     val cpuBatches: List<Int> = listOf(50, 200),
     val posts: Int = 500,
+    val clientKinds: List<ClientKind> = listOf(ClientKind.JDK, ClientKind.RAW),
     val poolSize: Int = 3570,
     val gets: Int = 50,
     val orders: Int = 200,

@@ -6,20 +6,34 @@ package org.ktcs.kernel.bench
  */
 class DemoWorkload(private val options: BenchOptions, private val figures: Figures) {
     fun run(ktcs: KtcsUnderTest, orders: BenchOrders, prefix: String) {
+        figures.note("clients", CLIENTS_NOTE)
         if (options.url == null) figures.record("launch_ready_s", ktcs.readySeconds)
         figures.record("rss_ready_mib", ktcs.stats?.rssMib())
+        unknownOrder(ktcs)
         options.cpuBatches.forEach { size -> cpuPerOrder(ktcs, orders.next("$prefix-cpu$size-", size), size) }
-        val single = OrderPosting.post(ktcs.client, orders.next("$prefix-c1-", options.posts), 1)
-        record("create_1_client", single)
-        figures.record("post_p50_ms", quantile(single.latenciesMillis, MEDIAN))
-        val eight = OrderPosting.post(ktcs.client, orders.next("$prefix-c8-", options.posts), CONCURRENT_CLIENTS)
-        record("create_8_clients", eight)
+        options.clientKinds.forEach { kind -> creation(ktcs, orders, prefix, kind) }
         val pool = countOrders(ktcs)
         if (pool < options.poolSize) {
             OrderPosting.post(ktcs.client, orders.next("$prefix-fill-", options.poolSize - pool), CONCURRENT_CLIENTS)
         }
         listOrders(ktcs)
         figures.record("rss_end_mib", ktcs.stats?.rssMib())
+    }
+
+    /** Order creation with 1 and with 8 clients of [kind]; the JDK client's figures carry no suffix. */
+    private fun creation(ktcs: KtcsUnderTest, orders: BenchOrders, prefix: String, kind: ClientKind) {
+        val suffix = if (kind == ClientKind.JDK) "" else "_${kind.name.lowercase()}"
+        val tag = kind.name.lowercase()
+        val single = OrderPosting.post(ktcs.client, orders.next("$prefix-c1$tag-", options.posts), 1, kind)
+        record("create_1_client$suffix", single)
+        figures.record("post_p50${suffix}_ms", quantile(single.latenciesMillis, MEDIAN))
+        val eight = OrderPosting.post(
+            ktcs.client,
+            orders.next("$prefix-c8$tag-", options.posts),
+            CONCURRENT_CLIENTS,
+            kind,
+        )
+        record("create_8_clients$suffix", eight)
     }
 
     private fun cpuPerOrder(ktcs: KtcsUnderTest, batch: List<BenchOrder>, size: Int) {
@@ -61,15 +75,42 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
         figures.record("get_orders_p95_ms", quantile(latencies, P95))
     }
 
+    /** `GET` of an order that does not exist, on one keep-alive connection of an idle kTCS: latency and CPU. */
+    private fun unknownOrder(ktcs: KtcsUnderTest) {
+        if (!ktcs.client.baseUrl.startsWith("http:")) return
+        val request = RawHttpConnection.getRequest(ktcs.client.baseUrl, BenchClient.orderPath("no-such-order"))
+        RawHttpConnection(ktcs.client.baseUrl).use { connection ->
+            repeat(UNKNOWN_ORDER_WARM_UP) { connection.exchange(request) }
+            val cpuStart = ktcs.stats?.cpuSeconds()
+            val latencies = ArrayList<Double>()
+            repeat(UNKNOWN_ORDER_GETS) {
+                val start = System.nanoTime()
+                val status = connection.exchange(request).status
+                check(status == NOT_FOUND) { "GET of an unknown order answered $status, not $NOT_FOUND" }
+                latencies += (System.nanoTime() - start) / OrderPosting.NANOS_PER_MILLI
+            }
+            figures.record("get_unknown_order_p50_ms", quantile(latencies, MEDIAN))
+            val cpuEnd = ktcs.stats?.cpuSeconds()
+            if (cpuStart != null && cpuEnd != null) {
+                figures.record("get_unknown_order_cpu_ms", (cpuEnd - cpuStart) * MILLIS / UNKNOWN_ORDER_GETS)
+            }
+        }
+    }
+
     private fun countOrders(ktcs: KtcsUnderTest): Int =
         ktcs.client.get("/transportOrders")?.let { kotlinx.serialization.json.Json.parseToJsonElement(it) }
             ?.let { (it as kotlinx.serialization.json.JsonArray).size } ?: 0
 
     companion object {
         const val KERNEL_THREAD = "kernel"
+        private const val CLIENTS_NOTE = "create_*/post_p50 without a suffix: the JDK's HttpClient; " +
+            "*_raw: the bench's lean client (keep-alive sockets, requests encoded beforehand)"
         const val CONCURRENT_CLIENTS = 8
         private const val MILLIS = 1000.0
         private const val MEDIAN = 0.5
         private const val P95 = 0.95
+        private const val UNKNOWN_ORDER_WARM_UP = 300
+        private const val UNKNOWN_ORDER_GETS = 2000
+        private const val NOT_FOUND = 404
     }
 }

@@ -16,22 +16,53 @@ data class PostingResult(
 
 /** Posts orders through the web API with a number of concurrent clients, as fast as kTCS answers. */
 object OrderPosting {
-    fun post(client: BenchClient, orders: List<BenchOrder>, clients: Int): PostingResult {
+    /**
+     * Posts [orders] with [clients] concurrent clients of [kind], each order once; every POST must be answered 200.
+     * The raw client's requests are encoded and its connections opened before the clock starts.
+     */
+    fun post(
+        client: BenchClient,
+        orders: List<BenchOrder>,
+        clients: Int,
+        kind: ClientKind = ClientKind.JDK,
+    ): PostingResult {
+        val requests = if (kind == ClientKind.RAW) rawRequests(client.baseUrl, orders) else null
+        val connections = requests?.let { List(clients) { RawHttpConnection(client.baseUrl) } }
+        try {
+            return timed(orders.size, clients) { worker, index ->
+                val order = orders[index]
+                if (connections == null) {
+                    client.postOrder(order.name, order.from, order.to)
+                } else {
+                    val answer = connections[worker].exchange(requests[index])
+                    check(answer.status == HTTP_OK) { "POST order ${order.name} answered ${answer.status}" }
+                }
+            }
+        } finally {
+            connections?.forEach { it.close() }
+        }
+    }
+
+    private fun rawRequests(baseUrl: String, orders: List<BenchOrder>): List<ByteArray> = orders.map {
+        RawHttpConnection.postRequest(baseUrl, BenchClient.orderPath(it.name), BenchClient.orderBody(it.from, it.to))
+    }
+
+    /** Runs [send] for every index below [count] on [clients] threads (each its worker number), timing each call. */
+    private fun timed(count: Int, clients: Int, send: (worker: Int, index: Int) -> Unit): PostingResult {
         val self = ProcStats.self()
-        val latencies = DoubleArray(orders.size)
+        val latencies = DoubleArray(count)
         val next = AtomicInteger()
         val cpuStart = self.cpuSeconds()
         val start = System.nanoTime()
         val pool = Executors.newFixedThreadPool(clients)
-        val failures = List(clients) {
+        val failures = List(clients) { worker ->
             pool.submit<Throwable?> {
                 runCatching {
                     while (true) {
                         val index = next.getAndIncrement()
-                        if (index >= orders.size) break
-                        val order = orders[index]
+                        if (index >= count) break
                         val sent = System.nanoTime()
-                        client.postOrder(order.name, order.from, order.to)
+                        send(worker, index)
                         latencies[index] = (System.nanoTime() - sent) / NANOS_PER_MILLI
                     }
                 }.exceptionOrNull()
@@ -41,7 +72,7 @@ object OrderPosting {
         pool.awaitTermination(1, TimeUnit.MINUTES)
         val wall = (System.nanoTime() - start) / NANOS_PER_SECOND
         failures.firstOrNull()?.let { throw IllegalStateException("posting orders failed: ${it.message}", it) }
-        return PostingResult(orders.size, wall, latencies.toList(), self.cpuSeconds() - cpuStart)
+        return PostingResult(count, wall, latencies.toList(), self.cpuSeconds() - cpuStart)
     }
 
     /**
@@ -70,5 +101,6 @@ object OrderPosting {
     val FINAL_STATES = setOf("FINISHED", "FAILED", "UNROUTABLE")
     const val NANOS_PER_MILLI = 1e6
     const val NANOS_PER_SECOND = 1e9
+    private const val HTTP_OK = 200
     private const val POLL_MILLIS = 100L
 }

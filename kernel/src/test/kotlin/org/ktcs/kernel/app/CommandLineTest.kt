@@ -5,6 +5,7 @@ import io.kotest.core.spec.style.FunSpec
 import io.kotest.datatest.withData
 import io.kotest.matchers.shouldBe
 import org.ktcs.kernel.bench.BenchOptions
+import org.ktcs.kernel.bench.ClientKind
 import org.ktcs.kernel.bench.Workload
 import java.nio.file.Path
 
@@ -52,6 +53,8 @@ class CommandLineTest : FunSpec({
             Command.Bench(BenchOptions(runs = 3, cpuBatches = listOf(5, 20), timeFactor = 10.0))
         CommandLine.parse(listOf("bench", "soak", "--hours", "24", "--minutes", "30", "--keep-hours=2")) shouldBe
             Command.Bench(BenchOptions(workload = Workload.SOAK, soakHours = 24.0, soakMinutes = 30.0, keepHours = 2.0))
+        CommandLine.parse(listOf("bench", "--client", "raw")) shouldBe
+            Command.Bench(BenchOptions(clientKinds = listOf(ClientKind.RAW)))
         CommandLine.parse(listOf("bench", "--help")) shouldBe Command.BenchHelp
     }
 
@@ -76,6 +79,9 @@ class CommandLineTest : FunSpec({
             listOf("bench", "soak", "--minutes", "0") to "--minutes expects a positive number, got '0'",
             listOf("bench", "soak", "--url", "http://127.0.0.1:55200") to
                 "bench soak starts its own kTCS; not with --url",
+            listOf("bench", "--client", "curl") to "--client expects jdk, raw or both separated by a comma, got 'curl'",
+            listOf("bench", "--url", "https://h:1") to
+                "the raw client speaks plain HTTP: with an https --url give --client jdk",
             listOf("bench", "--speed", "1") to "unknown bench option '--speed' (ktcs bench --help lists them)",
         ) { (args, message) ->
             shouldThrow<UsageException> { CommandLine.parse(args) }.message shouldBe message
