@@ -182,7 +182,7 @@ class DurableStateTest : FunSpec({
         val published = StateJournal.NOTIFICATIONS_KEPT + 250
         RestartableKernel(RestartableKernel.settingsFor(directory)).run {
             repeat(published) { index ->
-                onKernel { notifications.publish("test", NotificationLevel.INFORMATIONAL, "note $index") }
+                onKernel { publishNotification("test", NotificationLevel.INFORMATIONAL, "note $index") }
                 if (index % 100 == 99) committed()
             }
             crash()
