@@ -35,7 +35,8 @@ object StateCodec {
                 .addSerializer(Instant::class.java, InstantWriter)
                 .addDeserializer(Instant::class.java, InstantReader)
                 .addSerializer(Step::class.java, StepWriter)
-                .addDeserializer(Step::class.java, StepReader),
+                .addDeserializer(Step::class.java, StepReader)
+                .addDeserializer(TransportOrder::class.java, TransportOrderReader),
         )
         // Only what the objects hold, not what they compute (an order's current drive order would be written twice).
         .visibility(PropertyAccessor.ALL, JsonAutoDetect.Visibility.NONE)
@@ -68,7 +69,7 @@ object StateCodec {
     // The names of the plant's points and paths, one instance each: 100,000 stored orders repeat them millions of times.
     private val plantNames = ConcurrentHashMap<String, String>()
 
-    private fun shared(name: String): String = plantNames.putIfAbsent(name, name) ?: name
+    internal fun shared(name: String): String = plantNames.putIfAbsent(name, name) ?: name
 
     // A route step as a six-element array: routes are most of a stored order, and a restart reads 100,000 of them.
     private object StepWriter : JsonSerializer<Step>() {
@@ -85,25 +86,33 @@ object StateCodec {
     }
 
     private object StepReader : JsonDeserializer<Step>() {
-        override fun deserialize(parser: JsonParser, context: DeserializationContext): Step {
-            check(parser.isExpectedStartArrayToken) { "a route step must be an array" }
-            val path = parser.nextTextValue()?.let(::shared)
-            val source = parser.nextTextValue()?.let(::shared)
-            val destination = shared(checkNotNull(parser.nextTextValue()) { "a route step needs a destination point" })
-            val orientation = VehicleOrientation.valueOf(parser.nextTextValue())
-            parser.nextToken()
-            val routeIndex = parser.intValue
-            parser.nextToken()
-            val executionAllowed = parser.booleanValue
-            check(parser.nextToken() == JsonToken.END_ARRAY) { "a route step has six elements" }
-            return Step(path, source, destination, orientation, routeIndex, executionAllowed)
-        }
+        override fun deserialize(parser: JsonParser, context: DeserializationContext): Step = step(parser)
+    }
+
+    /** A route step as [StepWriter] writes it, the parser on its array. */
+    internal fun step(parser: JsonParser): Step {
+        check(parser.isExpectedStartArrayToken) { "a route step must be an array" }
+        val path = parser.nextTextValue()?.let(::shared)
+        val source = parser.nextTextValue()?.let(::shared)
+        val destination = shared(checkNotNull(parser.nextTextValue()) { "a route step needs a destination point" })
+        val orientation = VehicleOrientation.valueOf(parser.nextTextValue())
+        parser.nextToken()
+        val routeIndex = parser.intValue
+        parser.nextToken()
+        val executionAllowed = parser.booleanValue
+        check(parser.nextToken() == JsonToken.END_ARRAY) { "a route step has six elements" }
+        return Step(path, source, destination, orientation, routeIndex, executionAllowed)
     }
 
     private object InstantReader : JsonDeserializer<Instant>() {
-        override fun deserialize(parser: JsonParser, context: DeserializationContext): Instant {
-            val (seconds, nanos) = parser.valueAsString.split(':').map(String::toLong)
-            return Instant.ofEpochSecond(seconds, nanos)
-        }
+        override fun deserialize(parser: JsonParser, context: DeserializationContext): Instant =
+            instant(parser.valueAsString)
+    }
+
+    /** An instant as [InstantWriter] writes it, `seconds:nanos`. */
+    internal fun instant(text: String): Instant {
+        val colon = text.indexOf(':')
+        require(colon > 0) { "an instant is written as seconds:nanos, not '$text'" }
+        return Instant.ofEpochSecond(text.substring(0, colon).toLong(), text.substring(colon + 1).toLong())
     }
 }
