@@ -38,12 +38,12 @@ class StateStore private constructor(
         connection.createStatement().use { statement ->
             statement.fetchSize = FETCH_SIZE
             statement.executeQuery("SELECT name, body FROM ${table.sqlName}").use { result ->
-                val rows = ArrayList<Pair<String, String>>(FETCH_SIZE)
+                var rows = ArrayList<Pair<String, String>>(FETCH_SIZE)
                 while (result.next()) {
                     rows += result.getString(1) to result.getString(2)
                     if (rows.size == FETCH_SIZE) {
                         chunk(rows)
-                        rows.clear()
+                        rows = ArrayList(FETCH_SIZE) // a chunk is [chunk]'s to keep: it may decode it on another thread
                     }
                 }
                 if (rows.isNotEmpty()) chunk(rows)

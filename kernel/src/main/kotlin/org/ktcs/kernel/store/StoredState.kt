@@ -3,6 +3,11 @@ package org.ktcs.kernel.store
 import org.ktcs.api.event.UserNotification
 import org.ktcs.api.order.OrderSequence
 import org.ktcs.api.order.TransportOrder
+import java.util.concurrent.Callable
+import java.util.concurrent.ExecutionException
+import java.util.concurrent.ExecutorService
+import java.util.concurrent.Executors
+import java.util.concurrent.Future
 
 /** Everything the store held when kTCS started, read and checked before the kernel starts. */
 data class StoredState(
@@ -16,6 +21,8 @@ data class StoredState(
     val isEmpty: Boolean get() = orders.isEmpty() && sequences.isEmpty() && vehicles.isEmpty() && locks.isEmpty()
 
     companion object {
+        private const val CHUNKS_AHEAD = 8
+
         private fun <T> parseRow(
             store: StateStore,
             table: StoreTable,
@@ -35,13 +42,35 @@ data class StoredState(
 
         /** Reads [store]; a row that cannot be read stops the start with a [StoreException] naming it. */
         fun load(store: StateStore): StoredState {
+            val decoders = Executors.newFixedThreadPool(Runtime.getRuntime().availableProcessors()) { task ->
+                Thread(task, "ktcs-store-decoder").apply { isDaemon = true }
+            }
+            try {
+                return load(store, decoders)
+            } finally {
+                decoders.shutdownNow()
+            }
+        }
+
+        private fun load(store: StateStore, decoders: ExecutorService): StoredState {
+            // Reading rows is one thread's work, decoding their JSON most of a restart's: the chunks are decoded on
+            // all cores while the next ones are read, at most a few chunks ahead (the JSON of 100,000 orders is
+            // several times the size of the orders, and must not be held all at once).
             fun <T> read(table: StoreTable, parse: (String) -> T): List<Pair<String, T>> {
                 val parsed = ArrayList<Pair<String, T>>()
-                // Each chunk parsed on all cores: reading 100,000 orders is most of a restart's work.
-                store.rows(table) { chunk ->
-                    chunk.parallelStream().map { (name, json) -> name to parseRow(store, table, name, json, parse) }
-                        .forEachOrdered(parsed::add)
+                val pending = ArrayDeque<Future<List<Pair<String, T>>>>()
+                fun takeOldest() = try {
+                    parsed += pending.removeFirst().get()
+                } catch (error: ExecutionException) {
+                    throw error.cause ?: error
                 }
+                store.rows(table) { chunk ->
+                    pending += decoders.submit(
+                        Callable { chunk.map { (name, json) -> name to parseRow(store, table, name, json, parse) } },
+                    )
+                    while (pending.size > CHUNKS_AHEAD) takeOldest()
+                }
+                while (pending.isNotEmpty()) takeOldest()
                 return parsed
             }
             return StoredState(
