@@ -35,8 +35,7 @@ object StateCodec {
                 .addSerializer(Instant::class.java, InstantWriter)
                 .addDeserializer(Instant::class.java, InstantReader)
                 .addSerializer(Step::class.java, StepWriter)
-                .addDeserializer(Step::class.java, StepReader)
-                .addDeserializer(TransportOrder::class.java, TransportOrderReader),
+                .addDeserializer(Step::class.java, StepReader),
         )
         // Only what the objects hold, not what they compute (an order's current drive order would be written twice).
         .visibility(PropertyAccessor.ALL, JsonAutoDetect.Visibility.NONE)
@@ -49,7 +48,12 @@ object StateCodec {
 
     fun <T> read(json: String, type: Class<T>): T = mapper.readValue(json, type)
 
-    fun order(json: String): TransportOrder = read(json, TransportOrder::class.java)
+    private val singleOrders = TransportOrderReader.single(mapper.factory)
+
+    fun order(json: String): TransportOrder = singleOrders.read(json)
+
+    /** Reads the orders of a store, on any number of threads; equal routes come back as one instance. */
+    fun orders(): (String) -> TransportOrder = TransportOrderReader.sharingRoutes(mapper.factory)::read
 
     fun sequence(json: String): OrderSequence = read(json, OrderSequence::class.java)
 
@@ -66,7 +70,8 @@ object StateCodec {
             generator.writeString("${value.epochSecond}:${value.nano}")
     }
 
-    // The names of the plant's points and paths, one instance each: 100,000 stored orders repeat them millions of times.
+    // The names of the plant's points, paths and vehicles, of order types and history codes (all bounded sets), one
+    // instance each: 100,000 stored orders repeat them millions of times.
     private val plantNames = ConcurrentHashMap<String, String>()
 
     internal fun shared(name: String): String = plantNames.putIfAbsent(name, name) ?: name

@@ -74,7 +74,7 @@ data class StoredState(
                 return parsed
             }
             return StoredState(
-                orders = read(StoreTable.TRANSPORT_ORDERS, StateCodec::order).map { it.second }
+                orders = read(StoreTable.TRANSPORT_ORDERS, StateCodec.orders()).map { it.second }
                     .sortedWith(compareBy({ it.creationTime }, { it.name })),
                 sequences = read(StoreTable.ORDER_SEQUENCES, StateCodec::sequence).map { it.second }
                     .sortedWith(compareBy({ it.creationTime }, { it.name })),

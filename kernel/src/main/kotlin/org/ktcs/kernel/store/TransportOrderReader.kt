@@ -1,9 +1,8 @@
 package org.ktcs.kernel.store
 
+import com.fasterxml.jackson.core.JsonFactory
 import com.fasterxml.jackson.core.JsonParser
 import com.fasterxml.jackson.core.JsonToken
-import com.fasterxml.jackson.databind.DeserializationContext
-import com.fasterxml.jackson.databind.JsonDeserializer
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.DriveOrder
 import org.ktcs.api.order.DriveOrderState
@@ -13,15 +12,26 @@ import org.ktcs.api.order.Step
 import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.order.TransportOrderState
 import java.time.Instant
+import java.util.concurrent.ConcurrentHashMap
 
 /**
  * Reads a stored [TransportOrder] token by token. A restart reads 100,000 of them, and Jackson's Kotlin module spends
  * most of that time in kotlin-reflect finding the constructors' parameters; this reader calls the constructors
  * directly. It reads what [StateCodec] writes (fields in any order, unknown ones skipped, missing ones at the data
  * classes' defaults), so stores written before it are read the same.
+ *
+ * A reader made to read many orders ([sharingRoutes]) gives equal routes one instance: the routes of 100,000 stored
+ * orders are most of their memory and mostly the same few, and every copy kept is one more for the collector to move.
  */
-internal object TransportOrderReader : JsonDeserializer<TransportOrder>() {
-    override fun deserialize(parser: JsonParser, context: DeserializationContext): TransportOrder = order(parser)
+internal class TransportOrderReader private constructor(
+    private val factory: JsonFactory,
+    private val routes: ConcurrentHashMap<Route, Route>?,
+) {
+    /** The order [json] holds. */
+    fun read(json: String): TransportOrder = factory.createParser(json).use { parser ->
+        parser.nextToken()
+        order(parser).also { check(parser.nextToken() == null) { "text after the transport order" } }
+    }
 
     private fun order(parser: JsonParser): TransportOrder {
         val defaults = Defaults.order
@@ -48,7 +58,7 @@ internal object TransportOrderReader : JsonDeserializer<TransportOrder>() {
 
                 "driveOrders" -> driveOrders = parser.list(::driveOrder)
 
-                "type" -> type = parser.required(field)
+                "type" -> type = StateCodec.shared(parser.required(field))
 
                 "state" -> state = TransportOrderState.valueOf(parser.required(field))
 
@@ -58,9 +68,9 @@ internal object TransportOrderReader : JsonDeserializer<TransportOrder>() {
 
                 "finishedTime" -> finishedTime = parser.instant()
 
-                "intendedVehicle" -> intendedVehicle = parser.text()
+                "intendedVehicle" -> intendedVehicle = parser.text()?.let(StateCodec::shared)
 
-                "processingVehicle" -> processingVehicle = parser.text()
+                "processingVehicle" -> processingVehicle = parser.text()?.let(StateCodec::shared)
 
                 "dependencies" -> dependencies = parser.list {
                     it.required("a dependency")
@@ -113,7 +123,7 @@ internal object TransportOrderReader : JsonDeserializer<TransportOrder>() {
             when (field) {
                 "name" -> name = parser.text()
                 "destination" -> destination = destination(parser)
-                "route" -> route = if (parser.currentToken == JsonToken.VALUE_NULL) null else route(parser)
+                "route" -> route = if (parser.currentToken == JsonToken.VALUE_NULL) null else shared(route(parser))
                 "state" -> state = DriveOrderState.valueOf(parser.required(field))
                 else -> parser.skipChildren()
             }
@@ -168,7 +178,7 @@ internal object TransportOrderReader : JsonDeserializer<TransportOrder>() {
         parser.forEachField { field ->
             when (field) {
                 "timestamp" -> timestamp = parser.instant()
-                "eventCode" -> eventCode = parser.text()
+                "eventCode" -> eventCode = parser.text()?.let(StateCodec::shared)
                 "supplement" -> supplement = parser.required(field)
                 else -> parser.skipChildren()
             }
@@ -179,6 +189,8 @@ internal object TransportOrderReader : JsonDeserializer<TransportOrder>() {
             supplement = supplement,
         )
     }
+
+    private fun shared(route: Route): Route = routes?.run { putIfAbsent(route, route) } ?: route
 
     /** An order with every default, so the defaults are the data class's and not repeated here. */
     private object Defaults {
@@ -214,4 +226,12 @@ internal object TransportOrderReader : JsonDeserializer<TransportOrder>() {
     private fun JsonParser.required(what: String): String = checkNotNull(text()) { "$what must not be null" }
 
     private fun JsonParser.instant(): Instant? = text()?.let(StateCodec::instant)
+
+    companion object {
+        /** A reader for one order at a time. */
+        fun single(factory: JsonFactory) = TransportOrderReader(factory, null)
+
+        /** A reader for all the orders of a store, on any number of threads, sharing equal routes. */
+        fun sharingRoutes(factory: JsonFactory) = TransportOrderReader(factory, ConcurrentHashMap())
+    }
 }

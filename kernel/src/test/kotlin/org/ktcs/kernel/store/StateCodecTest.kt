@@ -71,6 +71,15 @@ class StateCodecTest : FunSpec({
         StateCodec.order(StateCodec.write(full)) shouldBe full
     }
 
+    test("the orders of a store read back equal, their equal routes as one instance") {
+        val read = StateCodec.orders()
+        val first = read(StateCodec.write(full))
+        val second = read(StateCodec.write(full.copy(name = "Order-11")))
+        first shouldBe full
+        second shouldBe full.copy(name = "Order-11")
+        (second.driveOrders[0].route === first.driveOrders[0].route) shouldBe true
+    }
+
     test("an order with every optional field at its default reads back equal") {
         val bare = TransportOrder(
             name = "Order-8",
