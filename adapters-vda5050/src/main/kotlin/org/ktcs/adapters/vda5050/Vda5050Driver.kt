@@ -16,8 +16,6 @@ import org.ktcs.api.driver.DriverMessage
 import org.ktcs.api.driver.MovementCommand
 import org.ktcs.api.event.NotificationLevel
 import org.ktcs.api.kernel.Explained
-import org.ktcs.api.model.LoadHandlingDevice
-import org.ktcs.api.model.Position
 import org.ktcs.api.model.VehicleState
 import org.ktcs.api.order.TransportOrder
 import org.slf4j.LoggerFactory
@@ -48,24 +46,16 @@ class Vda5050Driver(
 
     @Volatile private var lastVisualizationMillis = 0L
     private var factsheet: JsonObject? = null
-    private var reportedErrors: Set<String> = emptySet()
     private var pendingCancel: Action? = null
     private var cancelSentAt = 0L
     private var orderSentAt = 0L
     private val deferred = ArrayDeque<MovementCommand>()
     private var rejections = 0
 
-    // What the driver reported last: a state message repeats most of it every second, and an unchanged value is not
-    // worth a kernel task. Reset when the driver is enabled.
-    private var reportedState: VehicleState? = null
-    private var reportedEnergy = -1
-
-    @Volatile private var reportedPose: Triple<Double, Double, Double>? = null // also written by visualization
+    private val reports = VehicleReports(vehicleName, context, properties)
 
     override fun onEnabled() {
-        reportedState = null
-        reportedEnergy = -1
-        reportedPose = null
+        reports.reset()
         listen()
     }
 
@@ -166,8 +156,8 @@ class Vda5050Driver(
         val p = context.plantModel.point(point) ?: throw IllegalArgumentException("unknown point '$point'")
         val theta = p.pose.orientationAngle.takeIf { !it.isNaN() }?.let(Math::toRadians) ?: 0.0
         val parameters = listOf(
-            ActionParameter("x", JsonPrimitive(p.pose.position.x / MM_PER_M)),
-            ActionParameter("y", JsonPrimitive(p.pose.position.y / MM_PER_M)),
+            ActionParameter("x", JsonPrimitive(p.pose.position.x / VehicleReports.MM_PER_M)),
+            ActionParameter("y", JsonPrimitive(p.pose.position.y / VehicleReports.MM_PER_M)),
             ActionParameter("theta", JsonPrimitive(theta)),
             ActionParameter("mapId", JsonPrimitive(mapIdOf(point))),
             ActionParameter("lastNodeId", JsonPrimitive(point)),
@@ -230,7 +220,7 @@ class Vda5050Driver(
         if (previous == message.connectionState) return
         when (message.connectionState) {
             Vda.ONLINE -> {
-                reportState(VehicleState.IDLE)
+                reports.state(VehicleState.IDLE)
                 if (previous != "UNKNOWN") {
                     context.notifyUser(NotificationLevel.INFORMATIONAL, "VDA 5050 vehicle $vehicleName is online again")
                 }
@@ -238,7 +228,7 @@ class Vda5050Driver(
             }
 
             else -> {
-                reportState(VehicleState.UNKNOWN)
+                reports.state(VehicleState.UNKNOWN)
                 val holding = if (pendingCommands.isEmpty()) "" else KEEPS_RESOURCES
                 context.notifyUser(
                     NotificationLevel.IMPORTANT,
@@ -257,33 +247,17 @@ class Vda5050Driver(
     }
 
     private fun onVisualization(message: Visualization) {
-        message.agvPosition?.let { reportPose(it.x, it.y, it.theta) }
+        message.agvPosition?.let { reports.pose(it.x, it.y, it.theta) }
     }
 
     private fun onState(state: State) {
         lastState = state
         lastStateAt = context.clock.now()
-        if (connectionState != Vda.ONLINE && connectionState == "UNKNOWN") connectionState = Vda.ONLINE
-        if (state.lastNodeId.isNotEmpty() && context.plantModel.point(state.lastNodeId) != null &&
-            context.vehicle().currentPosition != state.lastNodeId
-        ) {
-            context.reportPosition(state.lastNodeId)
-        }
-        state.agvPosition?.let { reportPose(it.x, it.y, it.theta) }
-        val energy = state.batteryState.batteryCharge.toInt().coerceIn(0, 100)
-        if (energy != reportedEnergy) {
-            reportedEnergy = energy
-            context.reportEnergyLevel(energy)
-        }
-        val devices = state.loads.orEmpty().mapIndexed { i, load ->
-            LoadHandlingDevice(load.loadPosition?.takeIf { it.isNotEmpty() } ?: "LHD-$i", full = true)
-        }
-        if (devices != context.vehicle().loadHandlingDevices) context.reportLoadHandlingDevices(devices)
-        reportLength(loaded = devices.isNotEmpty())
-        reportProperties(state)
+        if (connectionState == "UNKNOWN") connectionState = Vda.ONLINE
+        reports.fromState(state)
         // The MQTT client may run the connection and state topics' callbacks on different threads: a state message sent
         // before the connection broke can arrive after the last will, and must not make the vehicle look present.
-        reportState(if (connectionState == Vda.ONLINE) state.vehicleState() else VehicleState.UNKNOWN)
+        reports.state(if (connectionState == Vda.ONLINE) state.vehicleState() else VehicleState.UNKNOWN)
         checkCancel(state)
         val rejection = state.errors.firstOrNull { it.errorType in Vda.REJECTIONS }
         if (rejection != null && order != null && ++rejections > properties.maxIgnoredRejections) {
@@ -364,41 +338,6 @@ class Vda5050Driver(
         failed?.let { onCommandFailed(it, reason) }
     }
 
-    private fun reportProperties(state: State) {
-        val errors = state.errors.map { it.described() }.toSet()
-        (errors - reportedErrors).filter { it.startsWith(Vda.FATAL) }.forEach {
-            context.notifyUser(NotificationLevel.IMPORTANT, "VDA 5050 vehicle $vehicleName reports $it")
-        }
-        if (errors != reportedErrors) {
-            reportedErrors = errors
-            context.setVehicleProperty("vda5050:errors.fatal", state.errorTypes(Vda.FATAL))
-            context.setVehicleProperty("vda5050:errors.warning", state.errorTypes(Vda.WARNING))
-        }
-        val paused = state.paused?.toString()
-        if (context.vehicle().properties["vda5050:paused"] != paused) {
-            context.setVehicleProperty("vda5050:paused", paused)
-        }
-    }
-
-    /** openTCS's `vda5050:vehicleLengthLoaded`/`Unloaded`: the vehicle's length follows its load state. */
-    private fun reportLength(loaded: Boolean) {
-        val length = (if (loaded) properties.vehicleLengthLoaded else properties.vehicleLengthUnloaded) ?: return
-        if (context.vehicle().boundingBox.length != length.toLong()) context.reportLength(length.toLong())
-    }
-
-    private fun reportState(vehicleState: VehicleState) {
-        if (vehicleState == reportedState) return
-        reportedState = vehicleState
-        context.reportState(vehicleState)
-    }
-
-    private fun reportPose(x: Double, y: Double, theta: Double) {
-        val pose = Triple(x, y, theta)
-        if (pose == reportedPose) return
-        reportedPose = pose
-        context.reportPrecisePosition(Position((x * MM_PER_M).toLong(), (y * MM_PER_M).toLong()), Math.toDegrees(theta))
-    }
-
     companion object {
         const val INIT_POSITION = "vda5050:initPosition"
         const val STATE_REQUEST = "vda5050:stateRequest"
@@ -408,7 +347,6 @@ class Vda5050Driver(
 
         /** The transport-order property that says why the vehicle failed the order. */
         const val FAILURE_PROPERTY = "vda5050:failureReason"
-        private const val MM_PER_M = 1000.0
         private const val RESEND_MILLIS = 2000L
         private const val KEEPS_RESOURCES = "; it keeps its allocated resources, as it is still physically there"
     }
