@@ -2,6 +2,8 @@ package org.ktcs.adapters.vda5050
 
 import org.ktcs.adapters.vda5050.mqtt.BrokerSettings
 import org.ktcs.adapters.vda5050.mqtt.EmbeddedBroker
+import org.ktcs.adapters.vda5050.mqtt.InProcessLink
+import org.ktcs.adapters.vda5050.mqtt.MessageLink
 import org.ktcs.adapters.vda5050.mqtt.MqttLink
 import org.slf4j.LoggerFactory
 import java.util.UUID
@@ -10,19 +12,37 @@ import java.util.UUID
  * kTCS's side of the MQTT traffic: one client connection shared by every VDA 5050 vehicle, and the embedded broker
  * when [settings] ask for it. Nothing starts until the first vehicle needs it, so a plant without VDA 5050 vehicles
  * pays nothing for the driver.
+ *
+ * With the embedded broker, the vehicles' messages and kTCS's orders take the [InProcessLink] inside the broker, and
+ * the client carries only the `connection` topics (retained messages and last wills reach only a subscriber); with an
+ * external broker the client carries everything.
  */
 class Vda5050Broker(private val settings: BrokerSettings) : AutoCloseable {
     private val log = LoggerFactory.getLogger(Vda5050Broker::class.java)
     private var embedded: EmbeddedBroker? = null
+    private var inProcess: InProcessLink? = null
     private var link: MqttLink? = null
 
     /** The shared client, connecting (and starting the embedded broker) on first use. */
     @Synchronized
     fun link(): MqttLink = link ?: start()
 
+    /** What carries the vehicles' connection messages. */
+    fun connections(): MessageLink = link()
+
+    /** What carries every other vehicle message, and orders and instant actions. */
+    @Synchronized
+    fun messages(): MessageLink {
+        val client = link()
+        return inProcess ?: client
+    }
+
     private fun start(): MqttLink {
         if (settings.isEmbedded) {
-            embedded = EmbeddedBroker(settings.embeddedBindAddress, settings.embeddedPort).also { it.start() }
+            val tap = InProcessLink()
+            embedded = EmbeddedBroker(settings.embeddedBindAddress, settings.embeddedPort, tap.extension)
+                .also { it.start() }
+            inProcess = tap
         }
         val endpoint = settings.endpoint()
         val client = MqttLink("ktcs-${UUID.randomUUID()}", endpoint, settings.username, settings.password) { up ->
@@ -37,6 +57,7 @@ class Vda5050Broker(private val settings: BrokerSettings) : AutoCloseable {
     override fun close() {
         link?.close()
         link = null
+        inProcess = null
         embedded?.close()
         embedded = null
     }

@@ -2,11 +2,9 @@ package org.ktcs.adapters.vda5050
 
 import kotlinx.serialization.json.JsonObject
 import kotlinx.serialization.json.JsonPrimitive
-import org.ktcs.adapters.vda5050.mqtt.MqttLink
 import org.ktcs.adapters.vda5050.protocol.Action
 import org.ktcs.adapters.vda5050.protocol.ActionParameter
 import org.ktcs.adapters.vda5050.protocol.Connection
-import org.ktcs.adapters.vda5050.protocol.IncomingTopic
 import org.ktcs.adapters.vda5050.protocol.State
 import org.ktcs.adapters.vda5050.protocol.Vda
 import org.ktcs.adapters.vda5050.protocol.Visualization
@@ -25,26 +23,24 @@ import java.time.Instant
  * Drives one VDA 5050 vehicle over MQTT. The scheduler's allocated steps (the commands [BasicVehicleDriver] holds,
  * up to `vda5050:maxStepsBase`) form the order's base, the rest of the route its horizon; every newly allocated step
  * is an order update. `state` messages finish the commands whose edge and node the vehicle no longer reports (and
- * whose actions finished). Messages arrive on the MQTT client's threads: they are validated and parsed there and
- * handled in the kernel context.
+ * whose actions finished). Messages arrive on the link's threads (kTCS's MQTT client, or the embedded broker's): they
+ * are validated and parsed there and handled in the kernel context.
  */
 class Vda5050Driver(
     vehicleName: String,
     context: DriverContext,
     private val properties: Vda5050Properties,
-    private val link: () -> MqttLink,
+    private val broker: Vda5050Broker,
     private val defaultMapId: String,
 ) : BasicVehicleDriver(vehicleName, context, properties.maxStepsBase, properties.rechargeOperation) {
     private val log = LoggerFactory.getLogger(Vda5050Driver::class.java)
     private val actions = ActionMapping(properties, context.vehicle().properties)
-    private val topics = VehicleTopics(vehicleName, properties, link)
+    private val topics = VehicleTopics(vehicleName, properties, broker::messages, broker::connections)
     private var orderCount = 0
     private var order: OrderTracker? = null
     private var connectionState = "UNKNOWN"
     private var lastState: State? = null
     private var lastStateAt: Instant? = null
-
-    @Volatile private var lastVisualizationMillis = 0L
     private var factsheet: JsonObject? = null
     private var pendingCancel: Action? = null
     private var cancelSentAt = 0L
@@ -59,10 +55,7 @@ class Vda5050Driver(
         listen()
     }
 
-    private fun listen() = topics.listen(
-        wanted = { kind -> kind != IncomingTopic.VISUALIZATION || visualizationDue() },
-        received = ::received,
-    )
+    private fun listen() = topics.listen(::received)
 
     override fun onDisabled() {
         topics.stopListening()
@@ -200,12 +193,18 @@ class Vda5050Driver(
 
     private fun sendInstantActions(list: List<Action>) = topics.publishInstantActions(list)
 
-    /** On the MQTT client's thread, a validated and parsed message: handled in the kernel context. */
+    /** On the link's thread, a validated and parsed message: handled in the kernel context. */
     private fun received(message: Any) {
         when (message) {
-            is State -> inKernel { onState(message) }
+            is State -> {
+                message.agvPosition?.let { reports.pose(it.x, it.y, it.theta) }
+                inKernel { onState(message) }
+            }
+
             is Connection -> inKernel { onConnection(message) }
-            is Visualization -> onVisualization(message)
+
+            is Visualization -> message.agvPosition?.let { reports.pose(it.x, it.y, it.theta) }
+
             is JsonObject -> inKernel { factsheet = message }
         }
     }
@@ -237,17 +236,6 @@ class Vda5050Driver(
             }
         }
         context.publishEvent("vda5050:connection", mapOf("state" to message.connectionState))
-    }
-
-    private fun visualizationDue(): Boolean {
-        val now = System.currentTimeMillis()
-        if (now - lastVisualizationMillis < properties.minVisualizationIntervalMillis) return false
-        lastVisualizationMillis = now
-        return true
-    }
-
-    private fun onVisualization(message: Visualization) {
-        message.agvPosition?.let { reports.pose(it.x, it.y, it.theta) }
     }
 
     private fun onState(state: State) {

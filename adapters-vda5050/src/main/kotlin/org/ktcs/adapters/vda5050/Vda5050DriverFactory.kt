@@ -35,7 +35,7 @@ class Vda5050DriverFactory(
 
     override fun create(vehicleName: String, context: DriverContext): VehicleDriver {
         val properties = Vda5050Properties.read(vehicleName, context.vehicle().properties)
-        return Vda5050Driver(vehicleName, context, properties, broker::link, settings.mapId)
+        return Vda5050Driver(vehicleName, context, properties, broker, settings.mapId)
     }
 
     companion object {

@@ -7,11 +7,13 @@ import org.ktcs.api.event.NotificationLevel
 import org.ktcs.api.model.LoadHandlingDevice
 import org.ktcs.api.model.Position
 import org.ktcs.api.model.VehicleState
+import java.util.concurrent.atomic.AtomicReference
 
 /**
  * What a VDA 5050 vehicle's messages tell the kernel: its position, pose, energy, loads, length, errors and state.
  * A state message repeats most of it every second, and an unchanged value is not worth a kernel task, so only
- * changes are reported; [reset] (when the driver is enabled) reports everything again.
+ * changes are reported; [reset] (when the driver is enabled) reports everything again. Poses (from `state` and
+ * `visualization`) are coalesced: however many arrive while one waits for the kernel, the kernel reports the latest.
  */
 internal class VehicleReports(
     private val vehicleName: String,
@@ -22,7 +24,8 @@ internal class VehicleReports(
     private var energy = -1
     private var errors: Set<String> = emptySet()
 
-    @Volatile private var pose: Triple<Double, Double, Double>? = null // also written by visualization
+    private var pose: Pose? = null
+    private val pendingPose = AtomicReference<Pose?>()
 
     fun reset() {
         state = null
@@ -37,7 +40,6 @@ internal class VehicleReports(
         ) {
             context.reportPosition(message.lastNodeId)
         }
-        message.agvPosition?.let { pose(it.x, it.y, it.theta) }
         val charge = message.batteryState.batteryCharge.toInt().coerceIn(0, 100)
         if (charge != energy) {
             energy = charge
@@ -57,12 +59,22 @@ internal class VehicleReports(
         context.reportState(vehicleState)
     }
 
+    /** The vehicle's pose (metres, radians) from a message that just arrived, on the link's thread. */
     fun pose(x: Double, y: Double, theta: Double) {
-        val reported = Triple(x, y, theta)
-        if (reported == pose) return
-        pose = reported
-        context.reportPrecisePosition(Position((x * MM_PER_M).toLong(), (y * MM_PER_M).toLong()), Math.toDegrees(theta))
+        if (pendingPose.getAndSet(Pose(x, y, theta)) == null) context.clock.schedule(0, ::reportPose)
     }
+
+    private fun reportPose() {
+        val latest = pendingPose.getAndSet(null) ?: return
+        if (latest == pose) return
+        pose = latest
+        context.reportPrecisePosition(
+            Position((latest.x * MM_PER_M).toLong(), (latest.y * MM_PER_M).toLong()),
+            Math.toDegrees(latest.theta),
+        )
+    }
+
+    private data class Pose(val x: Double, val y: Double, val theta: Double)
 
     /** openTCS's `vda5050:vehicleLengthLoaded`/`Unloaded`: the vehicle's length follows its load state. */
     private fun length(loaded: Boolean) {

@@ -2,7 +2,7 @@ package org.ktcs.adapters.vda5050
 
 import kotlinx.serialization.SerializationException
 import kotlinx.serialization.json.JsonObject
-import org.ktcs.adapters.vda5050.mqtt.MqttLink
+import org.ktcs.adapters.vda5050.mqtt.MessageLink
 import org.ktcs.adapters.vda5050.protocol.Action
 import org.ktcs.adapters.vda5050.protocol.Connection
 import org.ktcs.adapters.vda5050.protocol.IncomingTopic
@@ -14,49 +14,75 @@ import org.ktcs.adapters.vda5050.protocol.Vda
 import org.ktcs.adapters.vda5050.protocol.Vda5050Json
 import org.ktcs.adapters.vda5050.protocol.Visualization
 import org.slf4j.LoggerFactory
+import java.nio.ByteBuffer
 import java.time.Instant
 import java.time.format.DateTimeFormatter
+import java.util.concurrent.atomic.AtomicLong
 
 /**
  * One VDA 5050 vehicle's topics under its `topicPrefix`: what the master control publishes (orders and instant
- * actions, with their header ids and timestamps) and what it listens to. An incoming message is validated against
- * its schema (if `validateIncomingMessages`) and parsed on the MQTT client's thread; an invalid or unreadable one is
- * logged with the reason and dropped.
+ * actions, with their header ids and timestamps) and what it listens to. The `connection` topic comes through
+ * [connections], everything else through [messages] (the same MQTT client with an external broker; see
+ * [Vda5050Broker]). An incoming message is validated against its schema (if `validateIncomingMessages`) and parsed on
+ * the link's thread; an invalid or unreadable one is logged with the reason and dropped. Visualization messages within
+ * `minVisualizationInterval` of the last one taken are dropped before their payload is read.
  */
 internal class VehicleTopics(
     private val vehicleName: String,
     private val properties: Vda5050Properties,
-    private val link: () -> MqttLink,
+    private val messages: () -> MessageLink,
+    private val connections: () -> MessageLink = messages,
+    private val millis: () -> Long = System::currentTimeMillis,
 ) {
     // The driver's log category: what a user turns up to watch a vehicle's messages covers these lines too.
     private val log = LoggerFactory.getLogger(Vda5050Driver::class.java)
     private val headerIds = HashMap<String, Long>()
 
+    @Volatile private var lastVisualizationMillis = Long.MIN_VALUE
+
+    /** How many incoming messages were read (validated and parsed): dropped visualization messages are not. */
+    val decoded = AtomicLong()
+
     /**
-     * Subscribes to the vehicle's connection, state, visualization and factsheet topics. [wanted] is asked first (a
-     * message it declines is neither validated nor parsed); [received] gets a parsed [Connection], [State],
-     * [Visualization] or factsheet [JsonObject].
+     * Listens to the vehicle's connection, state, visualization and factsheet topics; [received] gets a parsed
+     * [Connection], [State], [Visualization] or factsheet [JsonObject].
      */
-    fun listen(wanted: (IncomingTopic) -> Boolean, received: (Any) -> Unit) {
-        val mqtt = link()
-        val topics = listOf(
-            Triple(properties.connection.name, properties.connection.qos.coerceAtLeast(1), IncomingTopic.CONNECTION),
-            Triple(properties.state.name, properties.state.qos, IncomingTopic.STATE),
-            Triple(properties.visualization.name, properties.visualization.qos, IncomingTopic.VISUALIZATION),
-            Triple(properties.factsheet.name, properties.factsheet.qos, IncomingTopic.FACTSHEET),
-        )
-        topics.forEach { (topic, qos, kind) ->
-            mqtt.subscribe("${properties.topicPrefix}/$topic", qos) { payload ->
-                if (wanted(kind)) parsed(kind, payload)?.let(received)
+    fun listen(received: (Any) -> Unit) {
+        val connection = properties.connection
+        connections().listen(properties.topic(connection), connection.qos.coerceAtLeast(1)) { payload ->
+            parsed(IncomingTopic.CONNECTION, payload)?.let(received)
+        }
+        val link = messages()
+        listOf(
+            properties.state to IncomingTopic.STATE,
+            properties.visualization to IncomingTopic.VISUALIZATION,
+            properties.factsheet to IncomingTopic.FACTSHEET,
+        ).forEach { (topic, kind) ->
+            link.listen(properties.topic(topic), topic.qos) { payload ->
+                if (kind != IncomingTopic.VISUALIZATION || visualizationDue()) parsed(kind, payload)?.let(received)
             }
         }
         log.debug("vehicle {} listens on {}/#", vehicleName, properties.topicPrefix)
     }
 
     fun stopListening() {
-        val mqtt = link()
-        listOf(properties.connection, properties.state, properties.visualization, properties.factsheet)
-            .forEach { mqtt.unsubscribe(properties.topic(it)) }
+        connections().stopListening(properties.topic(properties.connection))
+        val link = messages()
+        listOf(properties.state, properties.visualization, properties.factsheet)
+            .forEach { link.stopListening(properties.topic(it)) }
+    }
+
+    // One link thread per vehicle at a time for an external broker, but the in-process link may use several.
+    @Synchronized
+    private fun visualizationDue(): Boolean {
+        val now = millis()
+        if (lastVisualizationMillis != Long.MIN_VALUE &&
+            now - lastVisualizationMillis < properties.minVisualizationIntervalMillis
+        ) {
+            return false
+        }
+        lastVisualizationMillis = now
+        return true
     }
 
     fun publishOrder(update: OrderUpdate) {
@@ -85,11 +111,12 @@ internal class VehicleTopics(
     }
 
     private fun publish(topic: String, qos: Int, json: String) {
-        link().publish("${properties.topicPrefix}/$topic", json.toByteArray(), qos)
+        messages().send("${properties.topicPrefix}/$topic", json.toByteArray(), qos)
     }
 
-    private fun parsed(kind: IncomingTopic, payload: ByteArray): Any? {
-        val json = String(payload, Charsets.UTF_8)
+    private fun parsed(kind: IncomingTopic, payload: ByteBuffer): Any? {
+        decoded.incrementAndGet()
+        val json = Charsets.UTF_8.decode(payload).toString()
         if (properties.validateIncomingMessages) {
             val problems = MessageValidator.problems(kind, json)
             if (problems.isNotEmpty()) {

@@ -1,5 +1,6 @@
 package org.ktcs.adapters.vda5050.mqtt
 
+import com.hivemq.embedded.EmbeddedExtension
 import com.hivemq.embedded.EmbeddedHiveMQ
 import org.ktcs.extension.config.ConfigException
 import org.slf4j.LoggerFactory
@@ -18,9 +19,13 @@ import java.util.concurrent.TimeoutException
  * The MQTT broker kTCS starts for its VDA 5050 vehicles when no external one is configured: HiveMQ Community
  * Edition, in this process, listening on [bindAddress]:[port]. Its sessions, queues and retained messages live in
  * memory: they end with kTCS anyway, and file persistence only costs CPU per message. Only its configuration goes
- * to a temporary folder.
+ * to a temporary folder. [extension] (if any) runs inside it, e.g. the driver's [InProcessLink].
  */
-class EmbeddedBroker(private val bindAddress: String, private val port: Int) : AutoCloseable {
+class EmbeddedBroker(
+    private val bindAddress: String,
+    private val port: Int,
+    private val extension: EmbeddedExtension? = null,
+) : AutoCloseable {
     private val log = LoggerFactory.getLogger(EmbeddedBroker::class.java)
     private val home: Path = Files.createTempDirectory("ktcs-mqtt-")
     private var broker: EmbeddedHiveMQ? = null
@@ -40,6 +45,7 @@ class EmbeddedBroker(private val bindAddress: String, private val port: Int) : A
             .withDataFolder(Files.createDirectories(home.resolve("data")))
             .withExtensionsFolder(Files.createDirectories(home.resolve("extensions")))
             .withoutLoggingBootstrap()
+            .let { builder -> extension?.let(builder::withEmbeddedExtension) ?: builder }
             .build()
         val problem = try {
             started.start().get(START_SECONDS, TimeUnit.SECONDS)

@@ -4,6 +4,7 @@ import com.hivemq.client.mqtt.MqttClient
 import com.hivemq.client.mqtt.datatypes.MqttQos
 import com.hivemq.client.mqtt.mqtt3.Mqtt3AsyncClient
 import org.slf4j.LoggerFactory
+import java.nio.ByteBuffer
 import java.util.concurrent.CompletableFuture
 import java.util.concurrent.ConcurrentHashMap
 import java.util.concurrent.TimeUnit
@@ -23,9 +24,9 @@ class MqttLink(
     private val password: String = "",
     private val will: LastWill? = null,
     private val onConnectionChange: (Boolean) -> Unit = {},
-) : AutoCloseable {
+) : MessageLink, AutoCloseable {
     private val log = LoggerFactory.getLogger(MqttLink::class.java)
-    private val handlers = ConcurrentHashMap<String, (ByteArray) -> Unit>()
+    private val handlers = ConcurrentHashMap<String, (ByteBuffer) -> Unit>()
 
     @Volatile private var closed = false
 
@@ -67,16 +68,29 @@ class MqttLink(
             .isSuccess
     }
 
-    fun subscribe(topic: String, qos: Int, handler: (ByteArray) -> Unit): CompletableFuture<*> {
+    fun subscribe(topic: String, qos: Int, handler: (ByteArray) -> Unit): CompletableFuture<*> =
+        subscribeBuffers(topic, qos) { payload -> handler(ByteArray(payload.remaining()).also(payload::get)) }
+
+    private fun subscribeBuffers(topic: String, qos: Int, handler: (ByteBuffer) -> Unit): CompletableFuture<*> {
         handlers[topic] = handler
         return client.subscribeWith().topicFilter(topic).qos(qos(qos))
-            .callback { publish -> handlers[topic]?.invoke(publish.payloadAsBytes) }
+            .callback { publish -> handlers[topic]?.invoke(publish.payload.orElse(EMPTY)) }
             .send()
     }
 
     fun unsubscribe(topic: String) {
         handlers.remove(topic)
         client.unsubscribeWith().topicFilter(topic).send()
+    }
+
+    override fun listen(topic: String, qos: Int, handler: (ByteBuffer) -> Unit) {
+        subscribeBuffers(topic, qos, handler)
+    }
+
+    override fun stopListening(topic: String) = unsubscribe(topic)
+
+    override fun send(topic: String, payload: ByteArray, qos: Int) {
+        publish(topic, payload, qos)
     }
 
     fun publish(topic: String, payload: ByteArray, qos: Int, retain: Boolean = false): CompletableFuture<*> =
@@ -91,6 +105,7 @@ class MqttLink(
     private fun qos(code: Int): MqttQos = MqttQos.fromCode(code) ?: MqttQos.AT_MOST_ONCE
 
     private companion object {
+        val EMPTY: ByteBuffer = ByteBuffer.allocate(0).asReadOnlyBuffer()
         const val KEEP_ALIVE_SECONDS = 10
         const val CLOSE_SECONDS = 5L
         const val RECONNECT_INITIAL_MILLIS = 500L

@@ -19,11 +19,16 @@ internal class ThreadCpu(private val stats: ProcStats) {
         .entries.sortedByDescending { it.value }.map { it.key to it.value }
 
     companion object {
+        const val BROKER_GROUP = "MQTT broker"
+        const val IN_PROCESS_GROUP = "in-process link + message checks"
+
         /** The group of a thread named [name]; names are cut to 15 characters by Linux. */
         fun groupOf(name: String): String = when {
             name == "kernel" -> "kernel"
 
-            BROKER.any { name.startsWith(it) } -> "MQTT broker"
+            IN_PROCESS.any { name.startsWith(it) } -> IN_PROCESS_GROUP
+
+            BROKER.any { name.startsWith(it) } -> BROKER_GROUP
 
             CLIENT.any { name.startsWith(it) } -> "MQTT client + message checks"
 
@@ -37,9 +42,19 @@ internal class ThreadCpu(private val stats: ProcStats) {
 
         // HiveMQ CE's threads (its event loops, persistence writers and timers) and the HiveMQ MQTT client's.
         private val BROKER = listOf(
-            "hivemq-", "single-writer", "payload-persist", "Exodus", "embedded-hivemq", "scheduled-persi",
-            "extension-task", "global-traffic", "rocksdb",
+            "hivemq-",
+            "single-writer",
+            "payload-persist",
+            "Exodus",
+            "embedded-hivemq",
+            "scheduled-persi",
+            "global-traffic",
+            "rocksdb",
         )
+
+        // The embedded broker's extension executors: where the driver's in-process link validates and parses the
+        // vehicles' messages (the interceptor runs there).
+        private val IN_PROCESS = listOf("extension-task", "extension-exec", "hivemq-extensio")
         private val CLIENT = listOf("com.hivemq.clie", "RxComputationTh", "RxCachedWorkerP", "RxSchedulerPurg")
     }
 }

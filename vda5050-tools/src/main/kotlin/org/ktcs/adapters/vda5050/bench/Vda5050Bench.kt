@@ -1,6 +1,7 @@
 package org.ktcs.adapters.vda5050.bench
 
 import org.ktcs.adapters.vda5050.mqtt.BrokerEndpoint
+import org.ktcs.adapters.vda5050.mqtt.EmbeddedBroker
 import org.ktcs.adapters.vda5050.mqtt.MqttLink
 import org.ktcs.adapters.vda5050.sim.SimulatedVehicle
 import org.ktcs.adapters.vda5050.sim.SimulatorOptions
@@ -8,6 +9,7 @@ import org.ktcs.adapters.vda5050.sim.simulatedVehicles
 import org.ktcs.kernel.bench.BenchOrder
 import org.ktcs.kernel.bench.BenchOrders
 import org.ktcs.kernel.bench.KtcsUnderTest
+import org.ktcs.kernel.bench.ProcStats
 import org.ktcs.kernel.bench.quantile
 import org.ktcs.kernel.bench.string
 import org.ktcs.kernel.persistence.PlantModelFiles
@@ -37,8 +39,10 @@ data class Vda5050BenchOptions(
   Starts ./ktcs twice on a generated GxG traffic grid (default: as dense as 100 vehicles on 40x40) with N vehicles and posts the same M orders: once with VDA 5050
   vehicles played by the simulator over the embedded broker (state 1 Hz, visualization 10 Hz), once with loopback
   vehicles. Prints the orders finished, kTCS's CPU seconds per finished order in both runs and their ratio (with and
-  without the embedded broker's threads, which run in kTCS's process), kTCS's CPU by thread group, and the
-  broker round trip (publish to receive, QoS 0) p50/p99 measured every 100 ms during the VDA 5050 run."""
+  without the embedded broker's threads, which run in kTCS's process), kTCS's CPU by thread group, the
+  broker round trip (publish to receive, QoS 0) p50/p99 measured every 100 ms during the VDA 5050 run, and the
+  floor: the embedded broker alone (in the bench's process) receiving the N simulated vehicles' messages with no
+  subscriber for 20 s, its CPU per second and per finished order at the VDA 5050 run's order rate."""
 
         fun parse(args: List<String>): Vda5050BenchOptions {
             var options = Vda5050BenchOptions()
@@ -82,7 +86,7 @@ data class RunFigures(
 
     /** CPU per finished order without the embedded broker's threads. */
     val cpuPerOrderWithoutBrokerMillis: Double
-        get() = perOrder(cpuSeconds - cpuByGroup.filter { it.first == "MQTT broker" }.sumOf { it.second })
+        get() = perOrder(cpuSeconds - cpuByGroup.filter { it.first == ThreadCpu.BROKER_GROUP }.sumOf { it.second })
 
     private fun perOrder(seconds: Double) = if (finished == 0) Double.NaN else seconds * MILLIS / finished
 }
@@ -122,7 +126,20 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
                 roundTrips.maxOrNull() ?: Double.NaN,
             ),
         )
+        printFloor(vda, loopback)
         println("logs: $work")
+    }
+
+    private fun printFloor(vda: RunFigures, loopback: RunFigures) {
+        val perSecond = brokerFloor() * MILLIS
+        val secondsPerOrder = vda.wallSeconds / vda.finished.coerceAtLeast(1)
+        val perOrder = perSecond * secondsPerOrder
+        println(
+            "floor: the embedded broker alone receiving %d vehicles' messages (no subscriber, %d s): %.1f ms CPU per s"
+                .format(options.vehicles, FLOOR_SECONDS, perSecond) +
+                ", %.1f ms per finished order at the VDA 5050 run's rate (%.2f s per order), %.2f x loopback's"
+                    .format(perOrder, secondsPerOrder, perOrder / loopback.cpuPerOrderMillis),
+        )
     }
 
     private fun line(kind: String, figures: RunFigures) =
@@ -143,19 +160,7 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
         }
 
     private fun vdaRun(): Pair<RunFigures, List<Double>> {
-        val model = plant.copy(
-            vehicles = plant.vehicles.mapIndexed { i, vehicle ->
-                vehicle.copy(
-                    properties = vehicle.properties + mapOf(
-                        "tcs:preferredAdapterClass" to "vda5050",
-                        "vda5050:version" to "2.0",
-                        "vda5050:interfaceName" to "uagv",
-                        "vda5050:manufacturer" to "kTCS",
-                        "vda5050:serialNumber" to "BENCH-%03d".format(i + 1),
-                    ),
-                )
-            },
-        )
+        val model = vdaModel()
         val file = work.resolve("vda5050-plant.xml").also { PlantModelFiles.write(model, it) }
         val broker = freePort()
         val ktcs = KtcsUnderTest.start(
@@ -185,6 +190,48 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
             }
         }
     }
+
+    /**
+     * The part of the VDA 5050 run's CPU no driver can remove: the embedded broker (kTCS's, with kTCS's configuration,
+     * here in the bench's process) receiving the simulated vehicles' state and visualization messages with no
+     * subscriber. CPU seconds of its threads per second.
+     */
+    private fun brokerFloor(): Double {
+        val port = freePort()
+        val executor = Executors.newScheduledThreadPool(2) { Thread(it, "vda5050-sim").apply { isDaemon = true } }
+        EmbeddedBroker("127.0.0.1", port).use { broker ->
+            broker.start()
+            val endpoint = BrokerEndpoint("127.0.0.1", port, tls = false)
+            val vehicles = simulatedVehicles(vdaModel(), SimulatorOptions(timeFactor = options.timeFactor))
+                .map { SimulatedVehicle(it, endpoint, executor) }
+            try {
+                vehicles.forEach { it.start() }
+                Thread.sleep(TimeUnit.SECONDS.toMillis(FLOOR_WARM_UP_SECONDS))
+                val threads = ThreadCpu(ProcStats.self())
+                Thread.sleep(TimeUnit.SECONDS.toMillis(FLOOR_SECONDS))
+                return threads.byGroup().filter {
+                    it.first == ThreadCpu.BROKER_GROUP
+                }.sumOf { it.second } / FLOOR_SECONDS
+            } finally {
+                vehicles.forEach { runCatching { it.close() } }
+                executor.shutdownNow()
+            }
+        }
+    }
+
+    private fun vdaModel() = plant.copy(
+        vehicles = plant.vehicles.mapIndexed { i, vehicle ->
+            vehicle.copy(
+                properties = vehicle.properties + mapOf(
+                    "tcs:preferredAdapterClass" to "vda5050",
+                    "vda5050:version" to "2.0",
+                    "vda5050:interfaceName" to "uagv",
+                    "vda5050:manufacturer" to "kTCS",
+                    "vda5050:serialNumber" to "BENCH-%03d".format(i + 1),
+                ),
+            )
+        },
+    )
 
     private fun loopbackRun(): RunFigures {
         val model = plant.copy(
@@ -255,6 +302,8 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
         const val READY_SECONDS = 120L
         const val POLL_MILLIS = 1000L
         const val NANOS_PER_SECOND = 1e9
+        const val FLOOR_SECONDS = 20L
+        const val FLOOR_WARM_UP_SECONDS = 10L
         val FINAL_STATES = setOf("FINISHED", "FAILED", "UNROUTABLE", "WITHDRAWN")
     }
 }
