@@ -1,9 +1,11 @@
 package org.ktcs.adapters.vda5050
 
 import kotlinx.serialization.SerializationException
+import kotlinx.serialization.json.JsonElement
 import kotlinx.serialization.json.JsonObject
 import org.ktcs.adapters.vda5050.mqtt.MessageLink
 import org.ktcs.adapters.vda5050.protocol.Action
+import org.ktcs.adapters.vda5050.protocol.Checked
 import org.ktcs.adapters.vda5050.protocol.Connection
 import org.ktcs.adapters.vda5050.protocol.IncomingTopic
 import org.ktcs.adapters.vda5050.protocol.InstantActions
@@ -116,31 +118,38 @@ internal class VehicleTopics(
 
     private fun parsed(kind: IncomingTopic, payload: ByteBuffer): Any? {
         decoded.incrementAndGet()
-        val json = Charsets.UTF_8.decode(payload).toString()
-        if (properties.validateIncomingMessages) {
-            val problems = MessageValidator.problems(kind, json)
-            if (problems.isNotEmpty()) {
-                log.warn(
-                    "vehicle {}: dropped an invalid {} message: {}",
-                    vehicleName,
-                    kind.name.lowercase(),
-                    problems.take(MAX_PROBLEMS_LOGGED).joinToString("; "),
-                )
-                return null
-            }
-        }
+        val bytes = ByteArray(payload.remaining()).also(payload::get)
         return try {
-            when (kind) {
-                IncomingTopic.STATE -> Vda5050Json.decodeFromString(State.serializer(), json)
-                IncomingTopic.CONNECTION -> Vda5050Json.decodeFromString(Connection.serializer(), json)
-                IncomingTopic.VISUALIZATION -> Vda5050Json.decodeFromString(Visualization.serializer(), json)
-                IncomingTopic.FACTSHEET -> Vda5050Json.parseToJsonElement(json) as? JsonObject
+            if (properties.validateIncomingMessages) {
+                when (val checked = MessageValidator.check(kind, bytes)) {
+                    is Checked.Invalid -> invalid(kind, checked.problems)
+                    is Checked.Valid -> decode(kind, checked.json)
+                }
+            } else {
+                decode(kind, Vda5050Json.parseToJsonElement(String(bytes, Charsets.UTF_8)))
             }
         } catch (error: SerializationException) {
             unreadable(kind, error)
         } catch (error: IllegalArgumentException) {
             unreadable(kind, error)
         }
+    }
+
+    private fun decode(kind: IncomingTopic, json: JsonElement): Any? = when (kind) {
+        IncomingTopic.STATE -> Vda5050Json.decodeFromJsonElement(State.serializer(), json)
+        IncomingTopic.CONNECTION -> Vda5050Json.decodeFromJsonElement(Connection.serializer(), json)
+        IncomingTopic.VISUALIZATION -> Vda5050Json.decodeFromJsonElement(Visualization.serializer(), json)
+        IncomingTopic.FACTSHEET -> json as? JsonObject
+    }
+
+    private fun invalid(kind: IncomingTopic, problems: List<String>): Nothing? {
+        log.warn(
+            "vehicle {}: dropped an invalid {} message: {}",
+            vehicleName,
+            kind.name.lowercase(),
+            problems.take(MAX_PROBLEMS_LOGGED).joinToString("; "),
+        )
+        return null
     }
 
     private fun unreadable(kind: IncomingTopic, error: Exception): Nothing? {

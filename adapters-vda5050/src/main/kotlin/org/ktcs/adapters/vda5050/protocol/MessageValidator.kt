@@ -1,10 +1,18 @@
 package org.ktcs.adapters.vda5050.protocol
 
-import com.networknt.schema.InputFormat
 import com.networknt.schema.Schema
 import com.networknt.schema.SchemaLocation
 import com.networknt.schema.SchemaRegistry
 import com.networknt.schema.dialect.Dialects
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonNull
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
+import tools.jackson.core.JacksonException
+import tools.jackson.databind.JsonNode
+import tools.jackson.databind.json.JsonMapper
+import java.util.concurrent.ConcurrentHashMap
 
 /** The messages a vehicle sends, each with its VDA 5050 2.0.0 JSON schema (in this module's resources). */
 enum class IncomingTopic(val schemaFile: String) {
@@ -14,26 +22,51 @@ enum class IncomingTopic(val schemaFile: String) {
     FACTSHEET("factsheet.schema.json"),
 }
 
+/** An incoming message read and checked: the message as JSON, or what is wrong with it. */
+sealed interface Checked {
+    data class Valid(val json: JsonElement) : Checked
+
+    data class Invalid(val problems: List<String>) : Checked
+}
+
 /**
  * Checks incoming messages against the VDA 5050 JSON schemas (networknt json-schema-validator, draft 2020-12). The
- * schemas load once, on first use, and are shared by every vehicle.
+ * schemas load once, on first use, and are shared by every vehicle. A message is parsed once: the schema checks the
+ * parsed tree, and the driver decodes the same tree.
  */
 object MessageValidator {
     private val registry by lazy { SchemaRegistry.withDefaultDialect(Dialects.getDraft202012()) }
-    private val schemas = java.util.concurrent.ConcurrentHashMap<IncomingTopic, Schema>()
+    private val schemas = ConcurrentHashMap<IncomingTopic, Schema>()
+    private val mapper = JsonMapper()
+
+    /** [payload] (UTF-8 JSON) read and checked as a message on [topic]. */
+    fun check(topic: IncomingTopic, payload: ByteArray): Checked {
+        val tree = try {
+            mapper.readTree(payload)
+        } catch (error: JacksonException) {
+            return Checked.Invalid(listOf("not JSON: ${error.originalMessage}"))
+        }
+        val problems = schema(topic).validate(tree).map { error ->
+            "${error.instanceLocation.toString().ifEmpty { "$" }}: ${error.message}"
+        }
+        return if (problems.isEmpty()) Checked.Valid(tree.toKotlinx()) else Checked.Invalid(problems)
+    }
 
     /** What is wrong with [json] as a message on [topic]; empty when it is valid. */
-    fun problems(topic: IncomingTopic, json: String): List<String> {
-        val schema = schemas.computeIfAbsent(topic) {
-            registry.getSchema(SchemaLocation.of("classpath:$SCHEMAS/${it.schemaFile}"))
-        }
-        return try {
-            schema.validate(json, InputFormat.JSON).map { error ->
-                "${error.instanceLocation.toString().ifEmpty { "$" }}: ${error.message}"
-            }
-        } catch (error: RuntimeException) {
-            listOf("not JSON: ${error.message?.lineSequence()?.firstOrNull()}")
-        }
+    fun problems(topic: IncomingTopic, json: String): List<String> =
+        (check(topic, json.toByteArray()) as? Checked.Invalid)?.problems.orEmpty()
+
+    private fun schema(topic: IncomingTopic): Schema = schemas.computeIfAbsent(topic) {
+        registry.getSchema(SchemaLocation.of("classpath:$SCHEMAS/${it.schemaFile}"))
+    }
+
+    private fun JsonNode.toKotlinx(): JsonElement = when {
+        isObject -> JsonObject(properties().associate { (key, value) -> key to value.toKotlinx() })
+        isArray -> JsonArray(values().map { it.toKotlinx() })
+        isString -> JsonPrimitive(stringValue())
+        isNumber -> JsonPrimitive(numberValue())
+        isBoolean -> JsonPrimitive(booleanValue())
+        else -> JsonNull
     }
 
     private const val SCHEMAS = "org/ktcs/adapters/vda5050/schemas"
