@@ -52,9 +52,9 @@ internal class ThreadCpu(private val stats: ProcStats) {
             "rocksdb",
         )
 
-        // The embedded broker's extension executors: where the driver's in-process link validates and parses the
-        // vehicles' messages (the interceptor runs there).
-        private val IN_PROCESS = listOf("extension-task", "extension-exec", "hivemq-extensio")
+        // The embedded broker's extension executors: HiveMQ hands every inbound publish to them once an interceptor
+        // is registered, and the driver's in-process link validates and parses the vehicles' messages there.
+        private val IN_PROCESS = listOf("extension-task", "managed-extensi", "extension-exec", "hivemq-extensio")
         private val CLIENT = listOf("com.hivemq.clie", "RxComputationTh", "RxCachedWorkerP", "RxSchedulerPurg")
     }
 }
