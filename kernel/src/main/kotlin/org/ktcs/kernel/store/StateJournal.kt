@@ -38,6 +38,7 @@ class StateJournal(
     private var wakeQueued = false
     private val waiting = PriorityQueue<Waiter>(compareBy { it.mark })
     private var notificationsWritten = 0L
+    private val counts = Counts()
     private val writer = thread(name = "state-store-writer", isDaemon = true) { writeLoop() }
 
     fun append(change: StoreChange) {
@@ -87,6 +88,7 @@ class StateJournal(
         }
         writer.join(CLOSE_TIMEOUT_MILLIS)
         store.close()
+        log.info("state store writer: {}", counts)
     }
 
     private fun writeLoop() {
@@ -100,6 +102,7 @@ class StateJournal(
             }
             // A client waits for changes the writer took (unflushed) before the client's request marked them.
             writeUntilDone(batch.ifEmpty { listOf(flushMarker()) }, flush)
+            counts.add(batch.size, flush)
             if (flush) answer(upTo)
         }
     }
@@ -128,10 +131,29 @@ class StateJournal(
             flushed = upTo
             generateSequence { waiting.peek()?.takeIf { it.mark <= upTo }?.let { waiting.poll() } }.toList()
         }
+        counts.requests += answered.size
         answered.forEach { it.committed() }
     }
 
     private class Waiter(val mark: Long, val committed: () -> Unit)
+
+    /** How much the writer grouped: what a benchmark's log shows of the group commit. */
+    private class Counts {
+        private var commits = 0L
+        private var flushedCommits = 0L
+        private var changes = 0L
+        var requests = 0L
+
+        fun add(changes: Int, flushed: Boolean) {
+            commits++
+            if (flushed) flushedCommits++
+            this.changes += changes
+        }
+
+        override fun toString() =
+            "$commits commits of $changes changes; $flushedCommits flushed, answering $requests waiting requests " +
+                "(%.1f per flushed commit)".format(if (flushedCommits == 0L) 0.0 else requests.toDouble() / flushedCommits)
+    }
 
     private fun flushMarker() = StoreChange.Put(StoreTable.KERNEL_VALUES, FLUSHED_KEY, System.currentTimeMillis())
 
