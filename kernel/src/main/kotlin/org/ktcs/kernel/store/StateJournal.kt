@@ -152,7 +152,9 @@ class StateJournal(
 
         override fun toString() =
             "$commits commits of $changes changes; $flushedCommits flushed, answering $requests waiting requests " +
-                "(%.1f per flushed commit)".format(if (flushedCommits == 0L) 0.0 else requests.toDouble() / flushedCommits)
+                "(%.1f per flushed commit)".format(
+                    if (flushedCommits == 0L) 0.0 else requests.toDouble() / flushedCommits,
+                )
     }
 
     private fun flushMarker() = StoreChange.Put(StoreTable.KERNEL_VALUES, FLUSHED_KEY, System.currentTimeMillis())
