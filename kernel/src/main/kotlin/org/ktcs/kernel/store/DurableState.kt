@@ -20,12 +20,18 @@ class DurableState private constructor(
     durability: Durability,
     private val mode: RecoveryMode,
 ) : AutoCloseable {
-    private val journal = StateJournal(store, durability == Durability.COMMIT)
+    private var kernel: KernelCore? = null
+
+    // A client's mark wakes the writer after the kernel's queued requests (a group commit), once there is a kernel.
+    private val journal = StateJournal(store, durability == Durability.COMMIT) { wake ->
+        kernel?.context?.execute(wake) ?: wake()
+    }
     private var recovery: StateRecovery? = null
     private var recorder: StateRecorder? = null
 
     /** Puts the stored objects back, then records every change; before the kernel starts. */
     fun restoreInto(core: KernelCore) {
+        kernel = core
         recovery = StateRecovery(core, stored, mode).also { it.restore() }
         val lastNotification = stored.notifications.maxOfOrNull { it.first } ?: 0
         recorder = StateRecorder(core, journal, lastNotification).also { core.events.listen(it::onEvent) }

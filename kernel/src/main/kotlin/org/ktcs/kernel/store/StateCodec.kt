@@ -44,7 +44,12 @@ object StateCodec {
         .enable(MapperFeature.SORT_PROPERTIES_ALPHABETICALLY)
         .build()
 
-    fun write(value: Any): String = mapper.writeValueAsString(value)
+    private val orderWriter = TransportOrderWriter(mapper.factory)
+
+    fun write(value: Any): String = if (value is TransportOrder) orderWriter.write(value) else jackson(value)
+
+    /** What Jackson writes for [value]: the form [TransportOrderWriter] writes by hand (compared in StateCodecTest). */
+    internal fun jackson(value: Any): String = mapper.writeValueAsString(value)
 
     fun <T> read(json: String, type: Class<T>): T = mapper.readValue(json, type)
 
@@ -67,7 +72,7 @@ object StateCodec {
 
     private object InstantWriter : JsonSerializer<Instant>() {
         override fun serialize(value: Instant, generator: JsonGenerator, serializers: SerializerProvider) =
-            generator.writeString("${value.epochSecond}:${value.nano}")
+            generator.writeString(instant(value))
     }
 
     // The names of the plant's points, paths and vehicles, of order types and history codes (all bounded sets), one
@@ -78,16 +83,20 @@ object StateCodec {
 
     // A route step as a six-element array: routes are most of a stored order, and a restart reads 100,000 of them.
     private object StepWriter : JsonSerializer<Step>() {
-        override fun serialize(value: Step, generator: JsonGenerator, serializers: SerializerProvider) {
-            generator.writeStartArray()
-            generator.writeString(value.path)
-            generator.writeString(value.sourcePoint)
-            generator.writeString(value.destinationPoint)
-            generator.writeString(value.vehicleOrientation.name)
-            generator.writeNumber(value.routeIndex)
-            generator.writeBoolean(value.executionAllowed)
-            generator.writeEndArray()
-        }
+        override fun serialize(value: Step, generator: JsonGenerator, serializers: SerializerProvider) =
+            step(generator, value)
+    }
+
+    /** Writes [step] as a six-element array. */
+    internal fun step(generator: JsonGenerator, step: Step) {
+        generator.writeStartArray()
+        generator.writeString(step.path)
+        generator.writeString(step.sourcePoint)
+        generator.writeString(step.destinationPoint)
+        generator.writeString(step.vehicleOrientation.name)
+        generator.writeNumber(step.routeIndex)
+        generator.writeBoolean(step.executionAllowed)
+        generator.writeEndArray()
     }
 
     private object StepReader : JsonDeserializer<Step>() {
@@ -113,6 +122,9 @@ object StateCodec {
         override fun deserialize(parser: JsonParser, context: DeserializationContext): Instant =
             instant(parser.valueAsString)
     }
+
+    /** [instant] as `seconds:nanos`. */
+    internal fun instant(instant: Instant): String = "${instant.epochSecond}:${instant.nano}"
 
     /** An instant as [InstantWriter] writes it, `seconds:nanos`. */
     internal fun instant(text: String): Instant {

@@ -18,6 +18,7 @@ import org.ktcs.kernel.core.KernelCore
 class StateRecorder(private val core: KernelCore, private val journal: StateJournal, notificationsSoFar: Long) {
     private var notificationNumber = notificationsSoFar
     private val vehiclesWritten = HashMap<String, StoredVehicle>()
+    private var namesWritten: NamePosition? = null
 
     fun onEvent(event: KernelEvent) {
         when (event) {
@@ -77,8 +78,11 @@ class StateRecorder(private val core: KernelCore, private val journal: StateJour
         journal.append(StoreChange.Put(StoreTable.PLANT_LOCKS, name, lock))
     }
 
+    /** The name generator's position, when it moved: an order named by its client leaves it where it was. */
     private fun recordNames() {
         val position = NamePosition(core.names.lastMillisUsed, core.names.lastCounterUsed)
+        if (position == namesWritten) return
+        namesWritten = position
         journal.append(StoreChange.Put(StoreTable.KERNEL_VALUES, NAMES_KEY, position))
     }
 

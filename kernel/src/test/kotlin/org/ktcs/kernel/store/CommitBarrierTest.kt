@@ -25,13 +25,15 @@ class CommitBarrierTest : FunSpec({
         val drivers = module { single { StepDriverFactory() } bind VehicleDriverFactory::class }
         val config = ConfigLoader().load(null, emptyMap(), emptyList())
         SimulationKernel(PlantModelLoader.loadDemo().model, config, listOf(drivers), RealTimeKernelContext()).use {
-            val committed = CompletableDeferred<Unit>()
+            val commit = CompletableDeferred<Unit>()
             var marked = 0L
             it.onKernel {
                 it.core.commitThrough(object : CommitBarrier {
                     override fun mark(): Long = ++marked
 
-                    override suspend fun awaitCommitted(mark: Long) = committed.await()
+                    override fun whenCommitted(mark: Long, committed: () -> Unit) {
+                        commit.invokeOnCompletion { committed() }
+                    }
                 })
             }
             val creation = TransportOrderCreation("T1", listOf(Destination("Storage 01", "Load cargo")))
@@ -42,7 +44,7 @@ class CommitBarrierTest : FunSpec({
 
                 answer.isCompleted shouldBe false
                 it.onKernel { it.core.orders.get("T1") } shouldNotBe null
-                committed.complete(Unit)
+                commit.complete(Unit)
                 answer.await().name shouldBe "T1"
             }
             marked shouldBe 1

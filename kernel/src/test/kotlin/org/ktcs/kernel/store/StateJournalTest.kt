@@ -44,6 +44,43 @@ class StateJournalTest : FunSpec({
         }
     }
 
+    test("requests marked before the kernel wakes the writer share one flushed commit (a group commit)") {
+        val store = RecordingStore()
+        val wakes = java.util.concurrent.LinkedBlockingQueue<() -> Unit>()
+        // A gather longer than the test: only the wake-up can start the flushed commit.
+        StateJournal(store, waitForCommit = true, gatherNanos = 60_000_000_000L, later = wakes::add).use { journal ->
+            val answered = java.util.concurrent.CountDownLatch(8)
+            repeat(8) { request ->
+                journal.append(put("order-$request"))
+                journal.whenCommitted(journal.mark()) { answered.countDown() }
+            }
+            Thread.sleep(100)
+
+            answered.count shouldBe 8
+            store.writes shouldBe emptyList()
+            wakes.size shouldBe 1
+            wakes.poll()()
+            answered.await(5, TimeUnit.SECONDS) shouldBe true
+            store.writes.single() shouldBe ((0 until 8).map { "order-$it" } to true)
+        }
+    }
+
+    test("a request is answered only once the commit holding its change returned from the disk") {
+        val store = RecordingStore()
+        val onDisk = java.util.concurrent.CountDownLatch(1)
+        store.beforeWrite = { onDisk.await() }
+        StateJournal(store, waitForCommit = true).use { journal ->
+            val answered = java.util.concurrent.CountDownLatch(1)
+            journal.append(put("order"))
+            journal.whenCommitted(journal.mark()) { answered.countDown() }
+
+            answered.await(300, TimeUnit.MILLISECONDS) shouldBe false
+            onDisk.countDown()
+            answered.await(5, TimeUnit.SECONDS) shouldBe true
+            store.writes.single() shouldBe (listOf("order") to true)
+        }
+    }
+
     test("with ASYNC durability nothing is flushed and nothing waits") {
         val store = RecordingStore()
         StateJournal(store, waitForCommit = false).use { journal ->
@@ -59,8 +96,10 @@ class StateJournalTest : FunSpec({
 private class RecordingStore : StoreWriter {
     val writes: MutableList<Pair<List<String>, Boolean>> = java.util.Collections.synchronizedList(mutableListOf())
     private val counted = java.util.concurrent.Semaphore(0)
+    var beforeWrite: () -> Unit = {}
 
     override fun write(changes: Collection<StoreChange>, flush: Boolean) {
+        beforeWrite()
         writes += changes.map { it.rowName } to flush
         counted.release()
     }
