@@ -17,6 +17,15 @@ interface KernelContext : KernelClock, AutoCloseable {
         schedule(0, task)
     }
 
+    /**
+     * Runs [task] in the kernel context as soon as possible, for a caller that waits for what [task] does: unlike
+     * [execute], which drops a task quietly once the context is closed, it throws then, so that the caller fails
+     * instead of waiting for ever.
+     */
+    fun submit(task: () -> Unit) {
+        execute(task)
+    }
+
     /** Runs [block] in the kernel context and returns its result (or throws its exception) to the caller. */
     suspend fun <T> call(block: () -> T): T
 

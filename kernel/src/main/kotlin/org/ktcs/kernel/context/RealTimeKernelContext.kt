@@ -41,6 +41,10 @@ class RealTimeKernelContext(private val wallClock: Clock = Clock.systemUTC()) : 
         return Cancellable { future.cancel(false) }
     }
 
+    override fun submit(task: () -> Unit) {
+        executor.execute { runGuarded(task) } // throws RejectedExecutionException once closed, as call does
+    }
+
     override suspend fun <T> call(block: () -> T): T {
         if (isInKernelContext()) return block()
         val result = CompletableDeferred<T>()

@@ -43,7 +43,7 @@ suspend fun <T> KernelCore.durably(block: () -> T): T {
         return block().also { commits.awaitCommitted(commits.mark()) }
     }
     val answer = CompletableDeferred<T>()
-    context.execute {
+    context.submit {
         runCatching(block).fold(
             { result -> commits.whenCommitted(commits.mark()) { answer.complete(result) } },
             answer::completeExceptionally,

@@ -7,6 +7,7 @@ import io.kotest.matchers.string.shouldContain
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeout
+import java.util.concurrent.RejectedExecutionException
 
 class RealTimeKernelContextTest : FunSpec({
     test("tasks run in order on the kernel thread") {
@@ -55,5 +56,12 @@ class RealTimeKernelContextTest : FunSpec({
 
         dropped.isSuccess shouldBe true
         dropped.getOrThrow().cancel()
+    }
+
+    test("a task a caller waits for, submitted once the context has closed, fails the caller instead of vanishing") {
+        val context = RealTimeKernelContext()
+        context.close()
+
+        shouldThrow<RejectedExecutionException> { context.submit { error("must not run") } }
     }
 })
