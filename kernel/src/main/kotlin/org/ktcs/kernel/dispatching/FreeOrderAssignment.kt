@@ -2,11 +2,16 @@ package org.ktcs.kernel.dispatching
 
 import org.ktcs.api.model.Vehicle
 import org.ktcs.api.order.TransportOrder
+import org.ktcs.api.order.TransportOrderState
 
 /**
  * Gives free orders to available vehicles (openTCS's `AssignFreeOrdersPhase`). The scarcer side chooses: with fewer
  * vehicles than orders each vehicle in turn takes its best order, otherwise each order in turn takes its best vehicle.
  * Orders that no vehicle could take get the reasons in their history.
+ *
+ * [assignNew] is the same phase for a run on changes ([IncrementalDispatcher]): when the previous run left no
+ * waiting order that an available vehicle could take and nothing has changed since for the waiting orders, only the
+ * new orders are looked at.
  */
 internal class FreeOrderAssignment(
     private val run: DispatchRun,
@@ -17,21 +22,66 @@ internal class FreeOrderAssignment(
     private val eligibility = OrderEligibility(run)
     private val refusals = HashMap<String, MutableList<Refusal>>()
     private val refusalsByVehicle = HashMap<String, MutableSet<String>>()
+    private val vehicles: List<Vehicle> by lazy {
+        run.vehicles.filter { !run.isAssigned(it) && availability.isAvailable(it) }
+    }
+    private var reasons: WaitingReasons? = null
 
     fun assign() {
-        val vehicles = run.vehicles.filter { !run.isAssigned(it) && availability.isAvailable(it) }
         val orders = run.dispatchableOrders.filter { eligibility.isFree(it) && isUnlocked(it) }
         if (vehicles.isNotEmpty() && orders.isNotEmpty()) {
             if (vehicles.size < orders.size) vehiclesChoose(vehicles, orders) else ordersChoose(orders, vehicles)
         }
-        recordDeferrals(orders, WaitingReasons(run, availability, vehicles))
-        reportIdleVehicles(orders)
+        recordDeferrals(orders, waitingReasons())
+        val waiting = orders.filter { !run.isAssigned(it) }
+        reportIdleVehicles { vehicle -> waiting.any { it.isFor(vehicle) } }
     }
+
+    /**
+     * Looks only at [newOrders] if that gives what [assign] would: no vehicle can take a free order now, and the
+     * waiting orders' reasons are still those the previous run gave ([previous], from [settled]). Returns `false`,
+     * having assigned nothing, if not.
+     *
+     * No available vehicle can take a waiting order: the previous run left none that an available vehicle refused
+     * ([settled]), so an available vehicle that was given none had no order meant for it (any order it could not take
+     * was meant for another vehicle); which vehicle an order is meant for changes only with a full run. The vehicles
+     * available now and unavailable then changed [WaitingReasons.signature].
+     */
+    fun assignNew(newOrders: Collection<String>, previous: WaitingReasons.Signature): Boolean {
+        val fresh = newOrders.mapNotNull { name ->
+            run.order(name)?.takeIf { it.state == TransportOrderState.DISPATCHABLE && eligibility.isFree(it) }
+        }
+        val waiting = waitingReasons()
+        val unchanged = waiting.signature() == previous && (vehicles.isEmpty() || fresh.isEmpty())
+        if (!unchanged) {
+            // The full phase gives its reasons after its assignments: they must not come from before them.
+            reasons = null
+            return false
+        }
+        recordDeferrals(fresh.filter(::isUnlocked), waiting)
+        reportIdleVehicles(::anyWaitingFor)
+        return true
+    }
+
+    /**
+     * What this phase leaves for the next run on changes: the inputs of the reasons given to orders no vehicle was
+     * asked about, or `null` if a vehicle refused an order (the refusals depend on which vehicles were asked, so the
+     * next run must ask again) or the kernel refused an assignment.
+     */
+    fun settled(): WaitingReasons.Signature? =
+        if (refusals.isNotEmpty() || run.kernelRefused) null else waitingReasons().signature()
+
+    private fun waitingReasons(): WaitingReasons =
+        reasons ?: WaitingReasons(run, availability, vehicles).also { reasons = it }
 
     private fun isUnlocked(order: TransportOrder): Boolean {
         val reason = eligibility.lockedTarget(order) ?: return true
         deferrals.record(order.name, reason)
         return false
+    }
+
+    private fun anyWaitingFor(vehicle: Vehicle): Boolean = run.dispatchableOrders.any {
+        !run.isAssigned(it) && it.isFor(vehicle) && eligibility.isFree(it) && eligibility.lockedTarget(it) == null
     }
 
     private fun vehiclesChoose(vehicles: List<Vehicle>, orders: List<TransportOrder>) {
@@ -74,14 +124,13 @@ internal class FreeOrderAssignment(
     }
 
     /** Tells why each idle vehicle took none of the orders left waiting: it is unavailable, or it refused them. */
-    private fun reportIdleVehicles(orders: List<TransportOrder>) {
-        val waiting = orders.filter { !run.isAssigned(it) }
-        for (vehicle in run.vehicles) run.context.vehicleWaiting(vehicle.name, idleReason(vehicle, waiting))
+    private fun reportIdleVehicles(anyWaitingFor: (Vehicle) -> Boolean) {
+        for (vehicle in run.vehicles) run.context.vehicleWaiting(vehicle.name, idleReason(vehicle, anyWaitingFor))
     }
 
-    private fun idleReason(vehicle: Vehicle, waiting: List<TransportOrder>): String? {
+    private fun idleReason(vehicle: Vehicle, anyWaitingFor: (Vehicle) -> Boolean): String? {
         if (run.isAssigned(vehicle) || vehicle.transportOrder != null) return null
-        if (waiting.none { it.isFor(vehicle) }) return null
+        if (!anyWaitingFor(vehicle)) return null
         val unavailable = availability.reasons(vehicle)
         if (unavailable.isNotEmpty()) return unavailable.joinToString(", ")
         return refusalsByVehicle[vehicle.name]?.joinToString("; ", prefix = "refuses the waiting orders: ")

@@ -32,6 +32,12 @@ internal class WaitingReasons(
         return "intended vehicle $intended: ${refusal(vehicle).detail}"
     }
 
+    /** Everything the reasons given by [withoutCandidates] depend on: equal signatures give every order the same reason. */
+    fun signature(): Signature = Signature(listOf(fleet) + run.vehicles.map { "${it.name}: ${refusal(it).detail}" })
+
+    /** See [signature]. */
+    data class Signature(private val parts: List<String>)
+
     private fun describeFleet(vehicles: List<Vehicle>): String {
         val busy = vehicles.filter(::isBusy)
         if (busy.size == vehicles.size) return "every vehicle is busy with an order: ${names(busy)}"
