@@ -26,7 +26,7 @@ class DefaultDispatcher(
     private val recovery: RecoveryEvaluator,
 ) : IncrementalDispatcher {
     private val deferrals = DeferralLog(context)
-    private var settled: WaitingReasons.Signature? = null
+    private var settled: WaitingReasons.Given? = null
 
     /** How many runs on changes looked at the new orders only (for tests and figures). */
     internal var incrementalRuns: Int = 0

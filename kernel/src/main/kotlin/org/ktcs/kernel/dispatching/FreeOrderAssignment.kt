@@ -26,6 +26,7 @@ internal class FreeOrderAssignment(
         run.vehicles.filter { !run.isAssigned(it) && availability.isAvailable(it) }
     }
     private var reasons: WaitingReasons? = null
+    private var carried: WaitingReasons.Given? = null
 
     fun assign() {
         val orders = run.dispatchableOrders.filter { eligibility.isFree(it) && isUnlocked(it) }
@@ -44,15 +45,15 @@ internal class FreeOrderAssignment(
      *
      * No available vehicle can take a waiting order: the previous run left none that an available vehicle refused
      * ([settled]), so an available vehicle that was given none had no order meant for it (any order it could not take
-     * was meant for another vehicle); which vehicle an order is meant for changes only with a full run. The vehicles
-     * available now and unavailable then changed [WaitingReasons.signature].
+     * was meant for another vehicle); which vehicle an order is meant for changes only with a full run. A vehicle
+     * available now that was not then changed the reasons.
      */
-    fun assignNew(newOrders: Collection<String>, previous: WaitingReasons.Signature): Boolean {
+    fun assignNew(newOrders: Collection<String>, previous: WaitingReasons.Given): Boolean {
         val fresh = newOrders.mapNotNull { name ->
             run.order(name)?.takeIf { it.state == TransportOrderState.DISPATCHABLE && eligibility.isFree(it) }
         }
         val waiting = waitingReasons()
-        val unchanged = waiting.signature() == previous && (vehicles.isEmpty() || fresh.isEmpty())
+        val unchanged = previous.holdIn(waiting) && (vehicles.isEmpty() || fresh.isEmpty())
         if (!unchanged) {
             // The full phase gives its reasons after its assignments: they must not come from before them.
             reasons = null
@@ -60,16 +61,20 @@ internal class FreeOrderAssignment(
         }
         recordDeferrals(fresh.filter(::isUnlocked), waiting)
         reportIdleVehicles(::anyWaitingFor)
+        carried = previous
         return true
     }
 
     /**
-     * What this phase leaves for the next run on changes: the inputs of the reasons given to orders no vehicle was
-     * asked about, or `null` if a vehicle refused an order (the refusals depend on which vehicles were asked, so the
-     * next run must ask again) or the kernel refused an assignment.
+     * What this phase leaves for the next run on changes: the reasons the waiting orders have (those given before this
+     * run too if it looked only at new orders), or `null` if a vehicle refused an order (the refusals depend on which
+     * vehicles were asked, so the next run must ask again) or the kernel refused an assignment.
      */
-    fun settled(): WaitingReasons.Signature? =
-        if (refusals.isNotEmpty() || run.kernelRefused) null else waitingReasons().signature()
+    fun settled(): WaitingReasons.Given? {
+        if (refusals.isNotEmpty() || run.kernelRefused) return null
+        val given = waitingReasons().given()
+        return carried?.plus(given) ?: given
+    }
 
     private fun waitingReasons(): WaitingReasons =
         reasons ?: WaitingReasons(run, availability, vehicles).also { reasons = it }

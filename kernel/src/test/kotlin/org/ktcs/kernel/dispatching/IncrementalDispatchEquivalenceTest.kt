@@ -189,6 +189,26 @@ class IncrementalDispatchEquivalenceTest : FunSpec({
         context.assignedOrder("V1") shouldBe "T1"
         dispatcher.incrementalRuns shouldBe 0
     }
+
+    test("after a freed vehicle took the next order, new orders are looked at alone again") {
+        val context = FakeDispatchContext(plant())
+        val dispatcher = context.dispatcher()
+        context.add(vehicle("V1").processing("Busy1"), order("Busy1", state = TransportOrderState.BEING_PROCESSED))
+        context.add(vehicle("V2").processing("Busy2"), order("Busy2", state = TransportOrderState.BEING_PROCESSED))
+        context.add(*(1..20).map { order("T$it", created = T0.plusSeconds(it.toLong())) }.toTypedArray())
+        dispatcher.dispatch()
+        context.add(vehicle("V2", at = "D"), order("Busy2", state = TransportOrderState.FINISHED))
+        dispatcher.dispatchChanges(emptyList())
+        context.assignedOrder("V2") shouldBe "T1"
+        val reads = context.dispatchableReads
+
+        context.add(order("T21", created = T0.plusSeconds(21)))
+        dispatcher.dispatchChanges(listOf("T21"))
+
+        dispatcher.incrementalRuns shouldBe 1
+        context.dispatchableReads shouldBe reads
+        context.deferralsOf("T21") shouldBe listOf("every vehicle is busy with an order: V1, V2")
+    }
 })
 
 private inline fun <T> withClue(clue: String, block: () -> T): T = io.kotest.assertions.withClue(clue, block)
