@@ -52,9 +52,9 @@ internal class FreeOrderAssignment(
         val fresh = newOrders.mapNotNull { name ->
             run.order(name)?.takeIf { it.state == TransportOrderState.DISPATCHABLE && eligibility.isFree(it) }
         }
+        if (vehicles.isNotEmpty() && fresh.isNotEmpty()) return false
         val waiting = waitingReasons()
-        val unchanged = previous.holdIn(waiting) && (vehicles.isEmpty() || fresh.isEmpty())
-        if (!unchanged) {
+        if (!previous.holdIn(waiting)) {
             // The full phase gives its reasons after its assignments: they must not come from before them.
             reasons = null
             return false
