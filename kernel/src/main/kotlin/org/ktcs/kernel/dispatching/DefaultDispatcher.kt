@@ -18,7 +18,8 @@ import org.ktcs.api.dispatching.RecoveryEvaluator
  * count against [DispatchContext.clock]; the dispatcher keeps no timers, so the kernel must run it again when a delay
  * may have passed. Between runs it remembers the last reason recorded per waiting order, and what the last run left
  * ([FreeOrderAssignment.settled]) for a run on changes ([dispatchChanges]): while no vehicle can take any waiting order, such a run looks
- * only at the new orders, so creating an order costs the same with ten orders waiting as with ten thousand.
+ * only at the new orders, so creating an order costs the same with ten orders waiting as with ten thousand; when a
+ * vehicle can, it assigns as a full run does but gives reasons again only where they may have changed.
  */
 class DefaultDispatcher(
     private val configuration: DispatcherConfiguration,
@@ -28,7 +29,7 @@ class DefaultDispatcher(
     private val deferrals = DeferralLog(context)
     private var settled: WaitingReasons.Given? = null
 
-    /** How many runs on changes looked at the new orders only (for tests and figures). */
+    /** How many runs on changes did not have to be full ones (for tests). */
     internal var incrementalRuns: Int = 0
         private set
 
@@ -51,7 +52,14 @@ class DefaultDispatcher(
         }
         handleIdleVehicles(run, availability)
         // Only a run that read the orders knows which are still waiting; the others leave the log as it is.
-        if (run.ordersRead) deferrals.retainOnly(run.dispatchableOrders.mapTo(HashSet()) { it.name })
+        // Runs on changes leave that to the full ones (at the latest the periodic run).
+        if (run.ordersRead && newOrders == null) {
+            deferrals.retainOnly(
+                run.dispatchableOrders.mapTo(HashSet()) {
+                    it.name
+                },
+            )
+        }
         settled = freeOrders.settled()
     }
 

@@ -28,41 +28,53 @@ internal class FreeOrderAssignment(
     private var reasons: WaitingReasons? = null
     private var carried: WaitingReasons.Given? = null
 
-    fun assign() {
-        val orders = run.dispatchableOrders.filter { eligibility.isFree(it) && isUnlocked(it) }
-        if (vehicles.isNotEmpty() && orders.isNotEmpty()) {
-            if (vehicles.size < orders.size) vehiclesChoose(vehicles, orders) else ordersChoose(orders, vehicles)
-        }
-        recordDeferrals(orders, waitingReasons())
-        val waiting = orders.filter { !run.isAssigned(it) }
-        reportIdleVehicles { vehicle -> waiting.any { it.isFor(vehicle) } }
-    }
+    fun assign() = assignAll(previous = null, fresh = emptySet())
 
     /**
-     * Looks only at [newOrders] if that gives what [assign] would: no vehicle can take a free order now, and the
-     * waiting orders' reasons are still those the previous run gave ([previous], from [settled]). Returns `false`,
-     * having assigned nothing, if not.
-     *
-     * No available vehicle can take a waiting order: the previous run left none that an available vehicle refused
-     * ([settled]), so an available vehicle that was given none had no order meant for it (any order it could not take
-     * was meant for another vehicle); which vehicle an order is meant for changes only with a full run. A vehicle
-     * available now that was not then changed the reasons.
+     * Does what [assign] would, looking only at what may have changed since the previous run ([previous], from
+     * [settled]). While no vehicle can take a waiting order it looks at [newOrders] alone: no vehicle is available, or
+     * no new order is free and the waiting orders' reasons still hold; the previous run left none that an available
+     * vehicle refused, so an available vehicle that was given none had no order meant for it (which vehicle an order
+     * is meant for changes only with a full run), and one that became available since changed the reasons of any
+     * order meant for it. Otherwise it assigns as [assign] does, and gives reasons again only to the new orders and
+     * those refused in this run if the others' still hold. Returns `false`, having done nothing, if [assign] must run
+     * instead (no vehicle is available and the waiting orders' reasons changed).
      */
     fun assignNew(newOrders: Collection<String>, previous: WaitingReasons.Given): Boolean {
         val fresh = newOrders.mapNotNull { name ->
             run.order(name)?.takeIf { it.state == TransportOrderState.DISPATCHABLE && eligibility.isFree(it) }
         }
-        if (vehicles.isNotEmpty() && fresh.isNotEmpty()) return false
-        val waiting = waitingReasons()
-        if (!previous.holdIn(waiting)) {
-            // The full phase gives its reasons after its assignments: they must not come from before them.
+        if (vehicles.isEmpty() || fresh.isEmpty()) {
+            val waiting = waitingReasons()
+            if (previous.holdIn(waiting)) {
+                recordDeferrals(fresh.filter(::isUnlocked), waiting)
+                reportIdleVehicles(::anyWaitingFor)
+                carried = previous
+                return true
+            }
+            // Reasons are given after the assignments: they must not come from before them.
             reasons = null
-            return false
+            if (vehicles.isEmpty()) return false
         }
-        recordDeferrals(fresh.filter(::isUnlocked), waiting)
-        reportIdleVehicles(::anyWaitingFor)
-        carried = previous
+        assignAll(previous, fresh.mapTo(HashSet()) { it.name })
         return true
+    }
+
+    /** Assigns; gives reasons to every order left waiting, or only to [fresh] and refused ones if [previous] holds. */
+    private fun assignAll(previous: WaitingReasons.Given?, fresh: Set<String>) {
+        val orders = run.dispatchableOrders.filter { eligibility.isFree(it) && isUnlocked(it) }
+        if (vehicles.isNotEmpty() && orders.isNotEmpty()) {
+            if (vehicles.size < orders.size) vehiclesChoose(vehicles, orders) else ordersChoose(orders, vehicles)
+        }
+        val waiting = waitingReasons()
+        if (previous != null && previous.holdIn(waiting)) {
+            recordDeferrals(orders.filter { it.name in fresh || it.name in refusals }, waiting)
+            carried = previous
+        } else {
+            recordDeferrals(orders, waiting)
+        }
+        val left = orders.filter { !run.isAssigned(it) }
+        reportIdleVehicles { vehicle -> left.any { it.isFor(vehicle) } }
     }
 
     /**

@@ -176,18 +176,20 @@ class IncrementalDispatchEquivalenceTest : FunSpec({
         dispatcher.incrementalRuns shouldBe 1
     }
 
-    test("a vehicle that became free makes a run on changes a full one, which gives it the oldest waiting order") {
+    test("a vehicle that became free takes the oldest waiting order, and the orders still waiting keep their reason") {
         val context = FakeDispatchContext(plant())
         val dispatcher = context.dispatcher()
-        context.add(vehicle("V1").processing("Busy"), order("Busy", state = TransportOrderState.BEING_PROCESSED))
+        context.add(vehicle("V1").processing("Busy1"), order("Busy1", state = TransportOrderState.BEING_PROCESSED))
+        context.add(vehicle("V2").processing("Busy2"), order("Busy2", state = TransportOrderState.BEING_PROCESSED))
         context.add(order("T1", created = T0.plusSeconds(1)), order("T2", created = T0.plusSeconds(2)))
         dispatcher.dispatch()
 
-        context.add(vehicle("V1", at = "D"), order("Busy", state = TransportOrderState.FINISHED))
+        context.add(vehicle("V1", at = "D"), order("Busy1", state = TransportOrderState.FINISHED))
         dispatcher.dispatchChanges(emptyList())
 
         context.assignedOrder("V1") shouldBe "T1"
-        dispatcher.incrementalRuns shouldBe 0
+        context.deferralsOf("T2") shouldBe listOf("every vehicle is busy with an order: V1, V2")
+        dispatcher.incrementalRuns shouldBe 1
     }
 
     test("after a freed vehicle took the next order, new orders are looked at alone again") {
@@ -205,7 +207,7 @@ class IncrementalDispatchEquivalenceTest : FunSpec({
         context.add(order("T21", created = T0.plusSeconds(21)))
         dispatcher.dispatchChanges(listOf("T21"))
 
-        dispatcher.incrementalRuns shouldBe 1
+        dispatcher.incrementalRuns shouldBe 2
         context.dispatchableReads shouldBe reads
         context.deferralsOf("T21") shouldBe listOf("every vehicle is busy with an order: V1, V2")
     }
