@@ -163,7 +163,7 @@ class IncrementalDispatchEquivalenceTest : FunSpec({
     test("while no vehicle can take an order, a run on changes does not read the waiting orders") {
         val context = FakeDispatchContext(plant())
         val dispatcher = context.dispatcher()
-        context.add(vehicle("V1").processing("Busy"), order("Busy", state = TransportOrderState.BEING_PROCESSED))
+        context.busy("V1")
         context.add(*(1..100).map { order("T$it") }.toTypedArray())
         dispatcher.dispatch()
         val reads = context.dispatchableReads
@@ -176,32 +176,18 @@ class IncrementalDispatchEquivalenceTest : FunSpec({
         dispatcher.incrementalRuns shouldBe 1
     }
 
-    test("a vehicle that became free takes the oldest waiting order, and the orders still waiting keep their reason") {
+    test("a freed vehicle takes the oldest waiting order, the others keep their reason, new ones are looked at alone") {
         val context = FakeDispatchContext(plant())
         val dispatcher = context.dispatcher()
-        context.add(vehicle("V1").processing("Busy1"), order("Busy1", state = TransportOrderState.BEING_PROCESSED))
-        context.add(vehicle("V2").processing("Busy2"), order("Busy2", state = TransportOrderState.BEING_PROCESSED))
-        context.add(order("T1", created = T0.plusSeconds(1)), order("T2", created = T0.plusSeconds(2)))
-        dispatcher.dispatch()
-
-        context.add(vehicle("V1", at = "D"), order("Busy1", state = TransportOrderState.FINISHED))
-        dispatcher.dispatchChanges(emptyList())
-
-        context.assignedOrder("V1") shouldBe "T1"
-        context.deferralsOf("T2") shouldBe listOf("every vehicle is busy with an order: V1, V2")
-        dispatcher.incrementalRuns shouldBe 1
-    }
-
-    test("after a freed vehicle took the next order, new orders are looked at alone again") {
-        val context = FakeDispatchContext(plant())
-        val dispatcher = context.dispatcher()
-        context.add(vehicle("V1").processing("Busy1"), order("Busy1", state = TransportOrderState.BEING_PROCESSED))
-        context.add(vehicle("V2").processing("Busy2"), order("Busy2", state = TransportOrderState.BEING_PROCESSED))
+        context.busy("V1", "V2")
         context.add(*(1..20).map { order("T$it", created = T0.plusSeconds(it.toLong())) }.toTypedArray())
         dispatcher.dispatch()
-        context.add(vehicle("V2", at = "D"), order("Busy2", state = TransportOrderState.FINISHED))
+
+        context.add(vehicle("V2", at = "D"), order("Busy-V2", state = TransportOrderState.FINISHED))
         dispatcher.dispatchChanges(emptyList())
+
         context.assignedOrder("V2") shouldBe "T1"
+        context.deferralsOf("T2") shouldBe listOf("every vehicle is busy with an order: V1, V2")
         val reads = context.dispatchableReads
 
         context.add(order("T21", created = T0.plusSeconds(21)))
@@ -212,5 +198,10 @@ class IncrementalDispatchEquivalenceTest : FunSpec({
         context.deferralsOf("T21") shouldBe listOf("every vehicle is busy with an order: V1, V2")
     }
 })
+
+/** Vehicles each busy with an order of its own (`Busy-V1` …). */
+private fun FakeDispatchContext.busy(vararg vehicles: String) = vehicles.forEach {
+    add(vehicle(it).processing("Busy-$it"), order("Busy-$it", state = TransportOrderState.BEING_PROCESSED))
+}
 
 private inline fun <T> withClue(clue: String, block: () -> T): T = io.kotest.assertions.withClue(clue, block)
