@@ -28,6 +28,8 @@ class BenchTest : FunSpec({
                 "create_1_client_per_s",
                 "create_1_client_client_cpu_s",
                 "create_8_clients_per_s",
+                "create_8_clients_cpu_per_post_ms",
+                "create_8_clients_kernel_thread_cpu_per_post_ms",
                 "post_p50_ms",
                 "create_1_client_raw_per_s",
                 "create_1_client_raw_client_cpu_s",

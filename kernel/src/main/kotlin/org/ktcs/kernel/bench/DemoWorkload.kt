@@ -24,16 +24,33 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
     private fun creation(ktcs: KtcsUnderTest, orders: BenchOrders, prefix: String, kind: ClientKind) {
         val suffix = if (kind == ClientKind.JDK) "" else "_${kind.name.lowercase()}"
         val tag = kind.name.lowercase()
-        val single = OrderPosting.post(ktcs.client, orders.next("$prefix-c1$tag-", options.posts), 1, kind)
-        record("create_1_client$suffix", single)
+        val single = posted(ktcs, "create_1_client$suffix", orders.next("$prefix-c1$tag-", options.posts), 1, kind)
         figures.record("post_p50${suffix}_ms", quantile(single.latenciesMillis, MEDIAN))
-        val eight = OrderPosting.post(
-            ktcs.client,
-            orders.next("$prefix-c8$tag-", options.posts),
-            CONCURRENT_CLIENTS,
-            kind,
-        )
-        record("create_8_clients$suffix", eight)
+        val eight = orders.next("$prefix-c8$tag-", options.posts)
+        posted(ktcs, "create_8_clients$suffix", eight, CONCURRENT_CLIENTS, kind)
+    }
+
+    /** Posts [batch] and records the rate, the client's CPU, and kTCS's CPU per POST (the process, the kernel thread). */
+    private fun posted(
+        ktcs: KtcsUnderTest,
+        name: String,
+        batch: List<BenchOrder>,
+        clients: Int,
+        kind: ClientKind,
+    ): PostingResult {
+        val stats = ktcs.stats
+        val cpuStart = stats?.cpuSeconds()
+        val threadStart = stats?.threadCpuSeconds(KERNEL_THREAD)
+        val result = OrderPosting.post(ktcs.client, batch, clients, kind)
+        record(name, result)
+        if (stats != null && cpuStart != null) {
+            figures.record("${name}_cpu_per_post_ms", (stats.cpuSeconds() - cpuStart) * MILLIS / result.count)
+        }
+        val threadEnd = stats?.threadCpuSeconds(KERNEL_THREAD)
+        if (threadStart != null && threadEnd != null) {
+            figures.record("${name}_kernel_thread_cpu_per_post_ms", (threadEnd - threadStart) * MILLIS / result.count)
+        }
+        return result
     }
 
     private fun cpuPerOrder(ktcs: KtcsUnderTest, batch: List<BenchOrder>, size: Int) {

@@ -45,17 +45,29 @@ internal class DispatchableOrders(
             }
             return
         }
-        val becameDispatchable = order.name !in orders
-        orders[order.name] = order
-        if (becameDispatchable) trigger.requestForNewOrder()
+        val before = orders.put(order.name, order)
+        when {
+            before == null -> trigger.requestForNewOrder(order.name)
+            !before.sameForDispatching(order) -> trigger.request()
+        }
     }
 
+    // A waiting order's history changes at every new reason; what a dispatcher decides by must be asked about again.
+    private fun TransportOrder.sameForDispatching(other: TransportOrder): Boolean = driveOrders == other.driveOrders &&
+        type == other.type &&
+        intendedVehicle == other.intendedVehicle &&
+        deadline == other.deadline &&
+        dispensable == other.dispensable &&
+        wrappingSequence == other.wrappingSequence &&
+        properties == other.properties
+
+    // A sequence's progress decides which of its waiting orders a free vehicle may take: a full run looks again.
     private fun releaseFinishedSequence(event: OrderSequenceEvent) {
+        trigger.request()
         val sequence = event.current ?: return
         if (!sequence.finished || event.previous?.finished == true) return
         state.plant.vehicles().filter { it.orderSequence == sequence.name }.forEach { vehicle ->
             state.plant.updateVehicle(vehicle.name) { it.copy(orderSequence = null) }
         }
-        trigger.request()
     }
 }

@@ -57,7 +57,7 @@ class KernelCore(
         options.newOrderDispatchDelayMillis,
     )
     private val state =
-        KernelState(context, model, options, driverFactories, { scheduler }, { router }, trigger::request)
+        KernelState(context, model, options, driverFactories, { scheduler }, { router }, trigger::requestForVehicle)
     private val intake = OrderIntake(state)
     private val lifecycle = OrderLifecycle(state.orders, state.sequences, { router }, options.dismissUnroutableOrders)
     private val dispatching = KernelDispatchContext(this, state)

@@ -62,6 +62,8 @@ class KernelDispatchContext(private val kernel: KernelCore, private val state: K
     fun onVehicleFree(vehicle: String) {
         val order = reservations.entries.firstOrNull { it.value == vehicle }?.key ?: return
         reservations.remove(order)
+        // The order waits among the others again (if not assigned below), which a run on changes would not see.
+        kernel.dispatch()
         val current = state.orders.get(order)?.takeIf { it.state == TransportOrderState.DISPATCHABLE } ?: return
         val position = state.plant.vehicle(vehicle).currentPosition ?: return
         kernel.router.routeOrder(state.plant.vehicle(vehicle), position, current)?.let {

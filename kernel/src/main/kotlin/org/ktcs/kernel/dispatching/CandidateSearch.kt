@@ -11,7 +11,13 @@ internal fun bestCandidate(
     ranking: CandidateRanking,
     assess: (Candidate) -> Candidate?,
 ): Candidate? {
-    val sorted = candidates.sortedWith(ranking.beforeRouting)
+    if (candidates.isEmpty()) return null
+    // Most searches end with the first group: find it without sorting a vehicle's candidates among thousands of orders.
+    val best = candidates.minWith(ranking.beforeRouting)
+    val (first, rest) = candidates.partition { ranking.beforeRouting.compare(it, best) == 0 }
+    val accepted = first.mapNotNull(assess)
+    if (accepted.isNotEmpty()) return accepted.minWith(ranking.full)
+    val sorted = rest.sortedWith(ranking.beforeRouting)
     var start = 0
     while (start < sorted.size) {
         val end = groupEnd(sorted, start, ranking.beforeRouting)

@@ -16,24 +16,51 @@ import org.ktcs.api.dispatching.RecoveryEvaluator
  * A run only looks at available vehicles and dispatchable orders, routes a vehicle–order pair at most once, and with
  * rankings that need no route (the defaults) routes candidates one by one until the first acceptable one. Delays
  * count against [DispatchContext.clock]; the dispatcher keeps no timers, so the kernel must run it again when a delay
- * may have passed. Between runs it remembers only the last reason recorded per waiting order.
+ * may have passed. Between runs it remembers the last reason recorded per waiting order, and what the last run left
+ * ([FreeOrderAssignment.settled]) for a run on changes ([dispatchChanges]): while no vehicle can take any waiting order, such a run looks
+ * only at the new orders, so creating an order costs the same with ten orders waiting as with ten thousand; when a
+ * vehicle can, it assigns as a full run does but gives reasons again only where they may have changed.
  */
 class DefaultDispatcher(
     private val configuration: DispatcherConfiguration,
     private val context: DispatchContext,
     private val recovery: RecoveryEvaluator,
-) : Dispatcher {
+) : IncrementalDispatcher {
     private val deferrals = DeferralLog(context)
+    private var settled: WaitingReasons.Given? = null
 
-    override fun dispatch() {
+    /** How many runs on changes did not have to be full ones (for tests). */
+    internal var incrementalRuns: Int = 0
+        private set
+
+    override fun dispatch() = run(newOrders = null)
+
+    override fun dispatchChanges(newOrders: Collection<String>) = run(newOrders)
+
+    private fun run(newOrders: Collection<String>?) {
         val run = DispatchRun(context, configuration, recovery)
         val availability = VehicleAvailability.of(run)
         val checks = CandidateChecks(run, availability)
         SequenceSuccessors(run, availability, checks, deferrals).assign()
-        FreeOrderAssignment(run, availability, checks, deferrals).assign()
+        val freeOrders = FreeOrderAssignment(run, availability, checks, deferrals)
+        val previous = settled
+        settled = null
+        if (newOrders != null && previous != null && freeOrders.assignNew(newOrders, previous)) {
+            incrementalRuns++
+        } else {
+            freeOrders.assign()
+        }
         handleIdleVehicles(run, availability)
         // Only a run that read the orders knows which are still waiting; the others leave the log as it is.
-        if (run.ordersRead) deferrals.retainOnly(run.dispatchableOrders.mapTo(HashSet()) { it.name })
+        // Runs on changes leave that to the full ones (at the latest the periodic run).
+        if (run.ordersRead && newOrders == null) {
+            deferrals.retainOnly(
+                run.dispatchableOrders.mapTo(HashSet()) {
+                    it.name
+                },
+            )
+        }
+        settled = freeOrders.settled()
     }
 
     private fun handleIdleVehicles(run: DispatchRun, availability: VehicleAvailability) {

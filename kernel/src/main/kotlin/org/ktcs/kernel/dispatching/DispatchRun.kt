@@ -31,6 +31,10 @@ internal class DispatchRun(
         context.dispatchableOrders().toList()
     }
 
+    /** Whether the kernel refused an assignment in this run (the next run must try again). */
+    var kernelRefused: Boolean = false
+        private set
+
     /** Whether this run has read the dispatchable orders. */
     var ordersRead: Boolean = false
         private set
@@ -61,6 +65,7 @@ internal class DispatchRun(
             context.assign(candidate.order.name, candidate.vehicle.name, candidate.driveOrders)
         } catch (e: KernelException) {
             log.warn("Could not assign {}: {}", candidate, e.message)
+            kernelRefused = true
             return false
         }
         assignedVehicles += candidate.vehicle.name

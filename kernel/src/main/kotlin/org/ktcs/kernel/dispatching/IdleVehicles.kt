@@ -20,9 +20,10 @@ internal class IdleVehicles(private val run: DispatchRun, private val availabili
         .sortedBy { it.name }
 
     // Charging vehicles are left alone: they are where they should be.
+    // The waiting orders are read last: a run in which no vehicle is idle and available never reads them.
     private fun isIdle(vehicle: Vehicle): Boolean = vehicle.state == VehicleState.IDLE &&
         vehicle.orderSequence == null &&
-        vehicle.name !in awaitedByDispensable &&
         !run.isAssigned(vehicle) &&
-        availability.isAvailable(vehicle, VehicleAvailability.Work(mayReplaceDispensable = false))
+        availability.isAvailable(vehicle, VehicleAvailability.Work(mayReplaceDispensable = false)) &&
+        vehicle.name !in awaitedByDispensable
 }

@@ -24,12 +24,33 @@ internal class WaitingReasons(
         run.vehicles.takeIf { it.isNotEmpty() }?.let(::describeFleet) ?: "the plant has no vehicles"
     }
 
+    private val given = HashMap<String?, String>()
+
     /** The reason for [order]; `null` only in a plant without vehicles. */
     fun withoutCandidates(order: TransportOrder): String? {
-        val intended = order.intendedVehicle ?: return fleet
-        val vehicle = run.vehicles.firstOrNull { it.name == intended }
-            ?: return "intended vehicle $intended is unknown"
+        val intended = order.intendedVehicle
+        return reasonFor(intended).also { given[intended] = it }
+    }
+
+    /** The reasons [withoutCandidates] gave so far. */
+    fun given(): Given = Given(HashMap(given))
+
+    private fun reasonFor(intended: String?): String {
+        if (intended == null) return fleet
+        val vehicle = run.vehicles.firstOrNull { it.name == intended } ?: return "intended vehicle $intended is unknown"
         return "intended vehicle $intended: ${refusal(vehicle).detail}"
+    }
+
+    /**
+     * Reasons given to waiting orders, by their intended vehicle (`null`: none). While they [holdIn] a later run, that
+     * run gives each of those orders the reason it has.
+     */
+    class Given(private val reasons: Map<String?, String>) {
+        fun holdIn(
+            later: WaitingReasons,
+        ): Boolean = reasons.all { (intended, text) -> later.reasonFor(intended) == text }
+
+        operator fun plus(later: Given): Given = Given(reasons + later.reasons)
     }
 
     private fun describeFleet(vehicles: List<Vehicle>): String {

@@ -58,8 +58,14 @@ class FakeDispatchContext(var model: PlantModel) : DispatchContext {
 
     override fun vehicles(): Collection<Vehicle> = vehicles.values
 
-    override fun dispatchableOrders(): Collection<TransportOrder> =
-        orders.values.filter { it.state == TransportOrderState.DISPATCHABLE }.sortedBy { it.creationTime }
+    /** How often the dispatcher read the dispatchable orders. */
+    var dispatchableReads = 0
+        private set
+
+    override fun dispatchableOrders(): Collection<TransportOrder> {
+        dispatchableReads++
+        return orders.values.filter { it.state == TransportOrderState.DISPATCHABLE }.sortedBy { it.creationTime }
+    }
 
     override fun transportOrder(name: String): TransportOrder? = orders[name]
 
