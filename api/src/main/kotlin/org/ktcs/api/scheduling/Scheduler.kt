@@ -76,6 +76,14 @@ public interface Scheduler : KernelComponent {
      * Called in the kernel context.
      */
     public fun claimIsBlocked(client: SchedulerClient): Boolean = false
+
+    /**
+     * Whether [claimIsBlocked] would hold if [client] claimed [resources] (as for [claim]) instead of its current
+     * claim, which stays as it is. The kernel asks before it routes a vehicle anew to break a deadlock or to avoid a
+     * blocked start: a new route that closes another cycle of waiting vehicles is not taken. The default, `false`,
+     * suits a scheduler that does not look ahead along claims. Called in the kernel context.
+     */
+    public fun claimWouldBeBlocked(client: SchedulerClient, resources: List<Set<String>>): Boolean = false
 }
 
 /** How waits follow from what clients hold and request, as [Scheduler.waitsFor] derives them by default. */

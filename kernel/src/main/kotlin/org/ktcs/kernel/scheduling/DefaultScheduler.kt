@@ -52,8 +52,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
 
     override fun claim(client: SchedulerClient, resources: List<Set<String>>) {
         claims[client.name] = resources.map { it.toSet() }
-        val stops = resources.map { step -> if (step.any(safety::isLocation)) pointOf(step) else null }
-        safety.claim(client.name, resources.map(::keysOf), stops, resources.lastOrNull()?.let(::pointOf))
+        safety.claim(client.name, resources.map(::keysOf), stopsOf(resources), resources.lastOrNull()?.let(::pointOf))
         retryDeferred()
     }
 
@@ -175,6 +174,15 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
      */
     override fun claimIsBlocked(client: SchedulerClient): Boolean = safety.waitsForItself(client.name)
 
+    /** Whether [claimIsBlocked] would hold for [client] if it claimed [resources]; its claim stays as it is. */
+    override fun claimWouldBeBlocked(client: SchedulerClient, resources: List<Set<String>>): Boolean =
+        safety.wouldWaitForItself(
+            client.name,
+            resources.map(::keysOf),
+            stopsOf(resources),
+            resources.lastOrNull()?.let(::pointOf),
+        )
+
     /** What [client] still needs as deadlock avoidance sees it: its claimed route ahead and its way out. */
     fun needs(client: String): Set<String> = safety.needs(client)
 
@@ -186,6 +194,10 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         val expanded = blocks.expand(resources)
         return expanded + blocks.entries(expanded).map { it.block.name }
     }
+
+    // Per step, the point where the vehicle stops for an operation at its end (null: it drives on).
+    private fun stopsOf(resources: List<Set<String>>): List<String?> =
+        resources.map { step -> if (step.any(safety::isLocation)) pointOf(step) else null }
 
     // A step's resources are its path, the point it ends at and maybe a location: the point is where it ends.
     private fun pointOf(resources: Set<String>): String? = resources.lastOrNull(safety::isPoint)

@@ -104,6 +104,22 @@ internal class RouteSafety(
     /** Whether [client], as it stands, waits through a chain of waits for itself (only a fresh claim can do that). */
     fun waitsForItself(client: String): Boolean = Walk(client, holdings(client)).isBlocked(lookAhead(client), client)
 
+    /**
+     * Whether [client] would wait through a chain of waits for itself if it claimed [route] instead of what it claims
+     * now (arguments as for [claim]); its claim stays as it is.
+     */
+    fun wouldWaitForItself(client: String, route: List<Set<String>>, stops: List<String?>, end: String?): Boolean {
+        val oldRoute = routes[client]
+        val oldWayOut = wayOut[client]
+        claim(client, route, stops, end)
+        try {
+            return waitsForItself(client)
+        } finally {
+            if (oldRoute == null) routes.remove(client) else routes[client] = oldRoute
+            if (oldWayOut == null) wayOut.remove(client) else wayOut[client] = oldWayOut
+        }
+    }
+
     /** What [client] needs next as deadlock avoidance sees it, for diagnostics. */
     fun needs(client: String): Set<String> = lookAhead(client).let { it.required + it.options.flatten() }
 

@@ -15,7 +15,17 @@ internal data object NothingLeft : RerouteOutcome
 
 internal data class Refused(val reason: String) : RerouteOutcome
 
-internal fun VehicleController.attemptReroute(avoid: Set<String>, forced: Boolean, onRequest: Boolean): RerouteOutcome {
+/**
+ * Routes the current drive order anew around [avoid]. A [safely] rerouted vehicle (to break a deadlock or avoid a
+ * blocked start) keeps its route if the new one would make it wait, through others, for itself: the watchdog would
+ * otherwise trade the cycle it breaks for one the new route closes, and back again at its next check.
+ */
+internal fun VehicleController.attemptReroute(
+    avoid: Set<String>,
+    forced: Boolean,
+    onRequest: Boolean,
+    safely: Boolean,
+): RerouteOutcome {
     val order = currentOrder?.let(env.orders::require) ?: return Refused("vehicle $name has no transport order")
     if (withdrawing) return Refused("the order ${order.name} of vehicle $name is being withdrawn")
     val driveOrder = order.driveOrders[order.currentDriveOrderIndex]
@@ -38,26 +48,48 @@ internal fun VehicleController.attemptReroute(avoid: Set<String>, forced: Boolea
     if (start == target && !forced) return NothingLeft
     val found = env.router().routes(env.plant.vehicle(name), start, target, avoid).firstOrNull()
         ?: return Refused("no route for vehicle $name from $start to $target" + lockedPathsText(start, target))
+    if (safely && closesCycle(order, commandsAhead(order, reroutedDriveOrder(order, driveOrder, oldRoute, found)))) {
+        return Refused("the new route of vehicle $name would close a cycle of waiting vehicles")
+    }
+    // A forced reroute forgets the commands sent: the new route then keeps only the steps driven.
     if (forced) restartFrom(start)
-    followNewRoute(order, driveOrder, oldRoute, found)
+    followNewRoute(order, reroutedDriveOrder(order, driveOrder, oldRoute, found))
     return Rerouted
 }
+
+/** Whether claiming [ahead] and the drive orders after the current one would make the vehicle wait for itself. */
+private fun VehicleController.closesCycle(order: TransportOrder, ahead: List<PlannedCommand>): Boolean =
+    env.scheduler().claimWouldBeBlocked(this, restOfOrder(order, order.currentDriveOrderIndex, ahead))
+
+private fun VehicleController.plannedCommands(order: TransportOrder, driveOrder: DriveOrder): List<PlannedCommand> =
+    plannedCommands(order, driveOrder, driveOrder.route!!) { env.plant.staticModel().location(it)?.name }
+
+/** How many steps of the current drive order's route the vehicle drove or was sent: a new route keeps them. */
+private fun VehicleController.keptSteps(order: TransportOrder): Int = order.currentRouteStepIndex + 1 + sent.size
+
+/** The commands of the (rerouted) current drive order [driveOrder] still ahead of the vehicle. */
+private fun VehicleController.commandsAhead(order: TransportOrder, driveOrder: DriveOrder): List<PlannedCommand> =
+    plannedCommands(order, driveOrder).drop(keptSteps(order))
 
 /** Where the route expects the vehicle once it carried out every command sent: after step [stepIndex]. */
 private fun expectedPosition(stepIndex: Int, route: Route): String? =
     route.steps.getOrNull(stepIndex)?.destinationPoint
         ?: route.steps.firstOrNull()?.let { it.sourcePoint ?: it.destinationPoint }
 
-private fun VehicleController.followNewRoute(
+/** [driveOrder] with the steps already driven or sent of [oldRoute], then [found]. */
+private fun VehicleController.reroutedDriveOrder(
     order: TransportOrder,
     driveOrder: DriveOrder,
     oldRoute: Route,
     found: Route,
-) {
-    val kept = oldRoute.steps.take(order.currentRouteStepIndex + 1 + sent.size)
+): DriveOrder {
+    val kept = oldRoute.steps.take(keptSteps(order))
     val route =
         Route(kept + found.steps.mapIndexed { i, step -> step.copy(routeIndex = kept.size + i) }, found.costs)
-    val rerouted = driveOrder.copy(route = route)
+    return driveOrder.copy(route = route)
+}
+
+private fun VehicleController.followNewRoute(order: TransportOrder, rerouted: DriveOrder) {
     env.orders.update(order.name) { current ->
         current.copy(driveOrders = current.driveOrders.map { if (it.name == rerouted.name) rerouted else it })
     }
@@ -66,11 +98,7 @@ private fun VehicleController.followNewRoute(
         waiting = null
     }
     remaining.clear()
-    remaining.addAll(
-        plannedCommands(order, rerouted, route) {
-            env.plant.staticModel().location(it)?.name
-        }.drop(kept.size),
-    )
+    remaining.addAll(commandsAhead(order, rerouted))
     claimRestOfOrder(order, order.currentDriveOrderIndex)
     publishResources()
     requestNext()
@@ -104,7 +132,10 @@ internal fun VehicleController.rerouteLaterLegs(avoid: Set<String>): Boolean {
     return rerouteLegs(order, later, avoid)
 }
 
-/** Routes each of [legs] (drive orders of [order] not started yet) around [avoid] where possible; claims the result. */
+/**
+ * Routes each of [legs] (drive orders of [order] not started yet) around [avoid] where possible and claims the result,
+ * unless that would make the vehicle wait, through others, for itself.
+ */
 internal fun VehicleController.rerouteLegs(order: TransportOrder, legs: List<DriveOrder>, avoid: Set<String>): Boolean {
     val found = legs.mapNotNull { leg ->
         val route = leg.route ?: return@mapNotNull null
@@ -115,13 +146,10 @@ internal fun VehicleController.rerouteLegs(order: TransportOrder, legs: List<Dri
             ?.let { leg.name to it }
     }.toMap()
     if (found.isEmpty()) return false
-    env.orders.update(order.name) { current ->
-        current.copy(
-            driveOrders = current.driveOrders.map { leg ->
-                found[leg.name]?.let { leg.copy(route = it) } ?: leg
-            },
-        )
-    }
+    fun TransportOrder.withNewRoutes() =
+        copy(driveOrders = driveOrders.map { leg -> found[leg.name]?.let { leg.copy(route = it) } ?: leg })
+    if (closesCycle(order.withNewRoutes(), listOfNotNull(waiting) + remaining)) return false
+    env.orders.update(order.name) { it.withNewRoutes() }
     claimRestOfOrder(env.orders.require(order.name), order.currentDriveOrderIndex)
     return true
 }

@@ -107,13 +107,18 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
      * avoidance judges the whole way the vehicle still has to go, so that it never starts a leg it cannot finish.
      */
     internal fun claimRestOfOrder(order: TransportOrder, index: Int) {
+        // A step asked for and not granted yet is still ahead: rerouting the later drive orders while the vehicle
+        // waits for a grant must not drop it from the claim.
+        env.scheduler().claim(this, restOfOrder(order, index, listOfNotNull(waiting) + remaining))
+    }
+
+    /** The claim for [order] from its drive order [index] on: [ahead] (what is left of that one), then the later ones. */
+    internal fun restOfOrder(order: TransportOrder, index: Int, ahead: List<PlannedCommand>): List<Set<String>> {
         val later = order.driveOrders.drop(index + 1).flatMap { driveOrder ->
             val route = driveOrder.route ?: return@flatMap emptyList()
             plannedCommands(order, driveOrder, route) { env.plant.staticModel().location(it)?.name }
         }
-        // A step asked for and not granted yet is still ahead: rerouting the later drive orders while the vehicle
-        // waits for a grant must not drop it from the claim.
-        env.scheduler().claim(this, (listOfNotNull(waiting) + remaining + later).map { it.resources })
+        return (ahead + later).map { it.resources }
     }
 
     internal fun requestNext() {
@@ -337,11 +342,12 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
     /**
      * Routes the rest of the current drive order anew around [avoid], from where the vehicle will be after the commands
      * it was already sent, or, if the current drive order does not pass [avoid], the later ones that do; returns whether
-     * it now follows a new route. Used to break deadlocks.
+     * it now follows a new route. Used to break deadlocks: a new route that would make the vehicle wait, through
+     * others, for itself (close another cycle) is not taken.
      */
     fun reroute(avoid: Set<String>): Boolean =
         if (avoid.isEmpty() || (listOfNotNull(waiting) + remaining).any { it.resources.any(avoid::contains) }) {
-            attemptReroute(avoid, forced = false, onRequest = false) == Rerouted
+            attemptReroute(avoid, forced = false, onRequest = false, safely = true) == Rerouted
         } else {
             // What to avoid lies past the current drive order: routing that one anew would change nothing.
             rerouteLaterLegs(avoid)
@@ -356,7 +362,7 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
      * left to reroute).
      */
     fun reroute(avoid: Set<String>, forced: Boolean): String? =
-        (attemptReroute(avoid, forced, onRequest = true) as? Refused)?.reason
+        (attemptReroute(avoid, forced, onRequest = true, safely = false) as? Refused)?.reason
 
     /** The driver can take more commands now (e.g. it was enabled). */
     fun onDriverReady() {

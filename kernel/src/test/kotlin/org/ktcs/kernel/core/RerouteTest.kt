@@ -129,6 +129,54 @@ class RerouteTest : FunSpec({
         }
     }
 
+    test("the watchdog's reroute is not taken when the new route would close another cycle of waiting vehicles") {
+        // V at A waits for X (held by bx). The way around X, over Y, leads into b1 at Y, who waits for Z (b2), who
+        // waits for A, where V stands: taking it would trade one deadlock for another, and back at the next check.
+        val loop = PlantModel(
+            "reroute-into-a-loop",
+            points = listOf("A", "X", "Y", "Z", "D").map { Point(it) },
+            paths = listOf(
+                Path("A --- X", "A", "X", 1_000),
+                Path("X --- D", "X", "D", 1_000),
+                Path("A --- Y", "A", "Y", 2_000),
+                Path("Y --- D", "Y", "D", 2_000),
+                Path("Y --- Z", "Y", "Z", 1_000),
+                Path("Z --- A", "Z", "A", 1_000),
+            ),
+            vehicles = listOf(Vehicle("V", properties = mapOf("loopback:initialPosition" to "A"))),
+        )
+        val drivers = RecordingStepDrivers()
+        SimulationKernel(loop, config, listOf(drivers.module)).use { kernel ->
+            val (bx, b1, b2) = listOf("bx", "b1", "b2").map { blockerName ->
+                object : SchedulerClient {
+                    override val name = blockerName
+
+                    override fun onAllocationGranted(resources: Set<String>) = true
+                }
+            }
+            kernel.now {
+                scheduler.allocateNow(bx, setOf("X"))
+                scheduler.allocateNow(b1, setOf("Y"))
+                scheduler.allocateNow(b2, setOf("Z"))
+                scheduler.claim(b1, listOf(setOf("Y --- Z", "Z")))
+                scheduler.claim(b2, listOf(setOf("Z --- A", "A")))
+                createTransportOrder(TransportOrderCreation("T", listOf(Destination("D", "MOVE"))))
+            }
+            kernel.context.runUntilTime(kernel.context.elapsedMillis() + 1_000)
+            kernel.now { scheduler.pendingAllocations()["V"] shouldBe listOf(setOf("A --- X", "X")) }
+
+            var rerouted: Boolean? = null
+            kernel.now { rerouted = reroute("V", avoid = setOf("A --- X", "X")) }
+
+            rerouted shouldBe false
+            kernel.core.orders.require("T").driveOrders.single().route!!.steps.map { it.path } shouldBe
+                listOf("A --- X", "X --- D")
+            kernel.now { scheduler.free(bx, setOf("X")) }
+            kernel.context.runUntil { kernel.core.orders.require("T").state.isFinal }
+            kernel.core.orders.require("T").state shouldBe TransportOrderState.FINISHED
+        }
+    }
+
     test("routing the later drive orders anew while the vehicle waits for a grant keeps that step in its claim") {
         val drivers = RecordingStepDrivers()
         SimulationKernel(model, config, listOf(drivers.module)).use { kernel ->

@@ -151,8 +151,13 @@ class DeadlockAvoidanceTest : FunSpec({
         f.scheduler.claim(v1, listOf(setOf("A", "L"), setOf("A-B", "B")))
         f.scheduler.claimIsBlocked(v1) shouldBe true
 
-        // Routed on over F instead, it waits for nobody.
-        f.scheduler.claim(v1, listOf(setOf("A", "L"), setOf("A-F", "F"), setOf("F-B", "B")))
+        // Routed on over F instead, it waits for nobody; asking first leaves the claim as it is.
+        val overF = listOf(setOf("A", "L"), setOf("A-F", "F"), setOf("F-B", "B"))
+        f.scheduler.claimWouldBeBlocked(v1, overF) shouldBe false
+        f.scheduler.claimIsBlocked(v1) shouldBe true
+        f.scheduler.claim(v1, overF)
+        f.scheduler.claimIsBlocked(v1) shouldBe false
+        f.scheduler.claimWouldBeBlocked(v1, listOf(setOf("A", "L"), setOf("A-B", "B"))) shouldBe true
         f.scheduler.claimIsBlocked(v1) shouldBe false
         f.allocate(v1, "A", "L")
         v1.granted shouldContainExactly listOf(setOf("A", "L"))
