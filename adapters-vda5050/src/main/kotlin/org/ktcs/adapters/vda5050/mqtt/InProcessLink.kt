@@ -17,6 +17,7 @@ import com.hivemq.extension.sdk.api.services.publish.RetainedMessageStore
 import org.slf4j.LoggerFactory
 import java.nio.ByteBuffer
 import java.util.concurrent.ConcurrentHashMap
+import java.util.concurrent.atomic.AtomicBoolean
 
 /**
  * The driver's link to the embedded broker from inside it (an [EmbeddedExtension] of kTCS's HiveMQ): a publish
@@ -67,9 +68,14 @@ class InProcessLink : MessageLink {
         .build()
 
     override fun listen(topic: String, qos: Int, handler: (ByteBuffer) -> Unit) {
-        handlers[topic] = handler
+        val heardLive = AtomicBoolean(false)
+        handlers[topic] = { payload ->
+            heardLive.set(true)
+            handler(payload)
+        }
+        // The store answers asynchronously: a message published meanwhile is newer than the retained one.
         retained?.getRetainedMessage(topic)?.thenAccept { message ->
-            message.flatMap { it.payload }.ifPresent { deliver(topic, handler, it) }
+            if (!heardLive.get()) message.flatMap { it.payload }.ifPresent { deliver(topic, handler, it) }
         }
     }
 
