@@ -41,7 +41,7 @@ class InProcessLink : MessageLink {
     private val interceptor = PublishInboundInterceptor { input: PublishInboundInput, _: PublishInboundOutput ->
         val packet = input.publishPacket
         val handler = handlers[packet.topic]
-        if (handler != null) deliver(packet.topic, handler, packet.payload.orElse(EMPTY))
+        if (handler != null) deliver(packet.topic, handler, packet.payload.orElse(MessageLink.EMPTY_PAYLOAD))
     }
 
     /** What the embedded broker is built with. */
@@ -99,9 +99,5 @@ class InProcessLink : MessageLink {
         } catch (error: RuntimeException) {
             log.warn("a message on {} could not be handled: {}", topic, error.toString())
         }
-    }
-
-    private companion object {
-        val EMPTY: ByteBuffer = ByteBuffer.allocate(0).asReadOnlyBuffer()
     }
 }

@@ -16,4 +16,9 @@ interface MessageLink {
     fun stopListening(topic: String)
 
     fun send(topic: String, payload: ByteArray, qos: Int)
+
+    companion object {
+        /** The payload of a message without one. */
+        val EMPTY_PAYLOAD: ByteBuffer = ByteBuffer.allocate(0).asReadOnlyBuffer()
+    }
 }

@@ -74,7 +74,7 @@ class MqttLink(
     private fun subscribeBuffers(topic: String, qos: Int, handler: (ByteBuffer) -> Unit): CompletableFuture<*> {
         handlers[topic] = handler
         return client.subscribeWith().topicFilter(topic).qos(qos(qos))
-            .callback { publish -> handlers[topic]?.invoke(publish.payload.orElse(EMPTY)) }
+            .callback { publish -> handlers[topic]?.invoke(publish.payload.orElse(MessageLink.EMPTY_PAYLOAD)) }
             .send()
     }
 
@@ -105,7 +105,6 @@ class MqttLink(
     private fun qos(code: Int): MqttQos = MqttQos.fromCode(code) ?: MqttQos.AT_MOST_ONCE
 
     private companion object {
-        val EMPTY: ByteBuffer = ByteBuffer.allocate(0).asReadOnlyBuffer()
         const val KEEP_ALIVE_SECONDS = 10
         const val CLOSE_SECONDS = 5L
         const val RECONNECT_INITIAL_MILLIS = 500L
