@@ -20,8 +20,11 @@ import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeoutOrNull
 import org.slf4j.LoggerFactory
+import java.io.IOException
+import java.net.InetSocketAddress
 import java.util.concurrent.atomic.AtomicInteger
 import java.util.concurrent.atomic.AtomicLong
+import java.net.ServerSocket as PlainServerSocket
 
 /** One accepted connection: its channels and who it is, as the log names it. */
 internal class Connection(private val socket: Socket) {
@@ -65,6 +68,8 @@ internal class TcpServer(
 
     /** The port actually bound (the configured one, or a free one for 0). */
     val port: Int = (server.localAddress as io.ktor.network.sockets.InetSocketAddress).port
+
+    private val boundAddress = InetSocketAddress(bindAddress, this.port)
 
     /** How many connections are served now. */
     val connections: Int get() = open.get()
@@ -125,9 +130,19 @@ internal class TcpServer(
     override fun close() {
         server.close()
         scope.cancel()
-        // The listening socket is closed on the selector; wait for it, so that the port is free on return.
         runBlocking { withTimeoutOrNull(CLOSE_TIMEOUT_MILLIS) { server.awaitClosed() } }
         selector.close()
+        awaitPortFree()
+    }
+
+    /**
+     * A non-blocking listening socket registered with a selector keeps listening until the selector thread deregisters
+     * it, after [close] has returned; a client connecting then would be accepted by nobody. Binding the port ourselves
+     * succeeds only once it is free, so [close] returns when no connection to it can succeed any more.
+     */
+    private fun awaitPortFree() {
+        val deadline = System.nanoTime() + CLOSE_TIMEOUT_MILLIS * 1_000_000
+        while (!canBind(boundAddress) && System.nanoTime() < deadline) Thread.sleep(1)
     }
 
     private companion object {
@@ -140,4 +155,15 @@ internal class TcpServer(
         const val CLOSE_TIMEOUT_MILLIS = 2_000L
         const val REFUSAL_LOG_INTERVAL_NANOS = 5_000_000_000L
     }
+}
+
+/** Whether a listening socket could be bound to [address] now, i.e. nothing listens there. */
+private fun canBind(address: InetSocketAddress): Boolean = try {
+    PlainServerSocket().use {
+        it.reuseAddress = true
+        it.bind(address)
+    }
+    true
+} catch (_: IOException) {
+    false
 }
