@@ -12,6 +12,12 @@ internal fun VehicleController.avoidBlockedStart(): Boolean {
     if (sent.isNotEmpty() || !scheduler.claimIsBlocked(this)) return false
     val position = env.plant.vehicle(name).currentPosition
     val first = remaining.firstOrNull() ?: return false
+    // On a two-way aisle the vehicles it would meet head-on may stand far beyond its first step: route around them.
+    // A new route for a later drive order only changes the claim: the vehicle still starts this one as planned.
+    val blockers = scheduler.claimBlockers(this) - held.all()
+    val beyondFirstStep = blockers.isNotEmpty() && blockers.none(firstMove()::contains)
+    val onCurrent = remaining.any { command -> command.resources.any(blockers::contains) }
+    if (beyondFirstStep && reroute(blockers) && !scheduler.claimIsBlocked(this)) return onCurrent
     val path = first.command.step.path
     if (remaining.all { it.command.step.path == null }) {
         rerouteNextLeg()
@@ -31,4 +37,12 @@ private fun VehicleController.rerouteNextLeg() {
     val next = order.driveOrders.getOrNull(order.currentDriveOrderIndex + 1) ?: return
     val first = next.route?.steps?.firstOrNull()?.path ?: return
     rerouteLegs(order, listOf(next), setOf(first))
+}
+
+/** What the vehicle's first move takes: the first step with a path of this drive order, else of the next one. */
+private fun VehicleController.firstMove(): Set<String> {
+    remaining.firstOrNull { it.command.step.path != null }?.let { return it.resources }
+    val order = env.orders.require(currentOrder!!)
+    val step = order.driveOrders.getOrNull(order.currentDriveOrderIndex + 1)?.route?.steps?.firstOrNull()
+    return setOfNotNull(step?.path, step?.destinationPoint)
 }
