@@ -4,8 +4,9 @@ package org.ktcs.kernel.vehicles
  * A vehicle starting a route from where it stood may find its first step leading into a queue of vehicles that
  * wait for its own point (it stood idle beside a full loop, or at a station whose other way out it was counted
  * on to take): going that way would close a deadlock. Route around that step's path instead (a detour that leaves
- * the point free, even if it joins the same queue later), else around the whole step, if the plant allows;
- * returns whether it rerouted.
+ * the point free, even if it joins the same queue later), else around the whole step, if the plant allows. Where
+ * what blocks it lies beyond its first move (a vehicle coming the other way on a two-way aisle), route around that
+ * first. Returns whether the current drive order was rerouted (and its first step asked for).
  */
 internal fun VehicleController.avoidBlockedStart(): Boolean {
     val scheduler = env.scheduler()
