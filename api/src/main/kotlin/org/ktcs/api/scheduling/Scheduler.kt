@@ -84,6 +84,14 @@ public interface Scheduler : KernelComponent {
      * suits a scheduler that does not look ahead along claims. Called in the kernel context.
      */
     public fun claimWouldBeBlocked(client: SchedulerClient, resources: List<Set<String>>): Boolean = false
+
+    /**
+     * What makes [client]'s claim blocked ([claimIsBlocked]): the resources it needs next that vehicles waiting, through
+     * others, for it hold. The kernel routes a vehicle whose claim is blocked around them where the plant allows (on a
+     * two-way aisle the vehicles it would meet head-on, not only its first step). The default, empty, suits a
+     * scheduler that does not look ahead along claims. Called in the kernel context.
+     */
+    public fun claimBlockers(client: SchedulerClient): Set<String> = emptySet()
 }
 
 /** How waits follow from what clients hold and request, as [Scheduler.waitsFor] derives them by default. */

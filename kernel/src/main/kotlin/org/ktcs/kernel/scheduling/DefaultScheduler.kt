@@ -174,13 +174,19 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
      */
     override fun claimIsBlocked(client: SchedulerClient): Boolean = safety.waitsForItself(client.name)
 
-    /** Whether [claimIsBlocked] would hold for [client] if it claimed [resources]; its claim stays as it is. */
+    override fun claimBlockers(client: SchedulerClient): Set<String> = safety.selfBlockers(client.name)
+
+    /**
+     * Whether [claimIsBlocked] would hold for [client] if it claimed [resources], or deadlock avoidance would hold back
+     * its first step (a new route that leads into a cycle one step later breaks nothing); its claim stays as it is.
+     */
     override fun claimWouldBeBlocked(client: SchedulerClient, resources: List<Set<String>>): Boolean =
         safety.wouldWaitForItself(
             client.name,
             resources.map(::keysOf),
             stopsOf(resources),
             resources.lastOrNull()?.let(::pointOf),
+            resources.firstOrNull()?.let { keysOf(client.heldAfter(it)) }.orEmpty(),
         )
 
     /** What [client] still needs as deadlock avoidance sees it: its claimed route ahead and its way out. */

@@ -79,12 +79,16 @@ internal class RouteSafety(
      * drives, so waits for that resolve by themselves.
      */
     fun mayGrant(client: String, keys: Set<String>, behind: Set<String>): Boolean {
-        val held = keys + behind
-        if (Walk(client, held).isBlocked(lookAhead(client, skipping = keys, holding = held), client)) {
+        if (!isSafe(client, keys, behind)) {
             heldBack++
             return false
         }
         return true
+    }
+
+    private fun isSafe(client: String, keys: Set<String>, behind: Set<String>): Boolean {
+        val held = keys + behind
+        return !Walk(client, held).isBlocked(lookAhead(client, skipping = keys, holding = held), client)
     }
 
     /**
@@ -104,16 +108,31 @@ internal class RouteSafety(
     /** Whether [client], as it stands, waits through a chain of waits for itself (only a fresh claim can do that). */
     fun waitsForItself(client: String): Boolean = Walk(client, holdings(client)).isBlocked(lookAhead(client), client)
 
+    /** What [client], as it stands, needs next and vehicles waiting, through others, for it hold. */
+    fun selfBlockers(client: String): Set<String> {
+        val walk = Walk(client, holdings(client))
+        val ahead = lookAhead(client)
+        if (!walk.isBlocked(ahead, client)) return emptySet()
+        return (ahead.required + ahead.options.flatten()).filterTo(HashSet()) { walk.isTaken(it, client) }
+    }
+
     /**
      * Whether [client] would wait through a chain of waits for itself if it claimed [route] instead of what it claims
-     * now (arguments as for [claim]); its claim stays as it is.
+     * now (arguments as for [claim]), or would be held back for good at its first step ([behindFirst]: what its length
+     * covers once there), which the next grant's check would refuse; its claim stays as it is.
      */
-    fun wouldWaitForItself(client: String, route: List<Set<String>>, stops: List<String?>, end: String?): Boolean {
+    fun wouldWaitForItself(
+        client: String,
+        route: List<Set<String>>,
+        stops: List<String?>,
+        end: String?,
+        behindFirst: Set<String>,
+    ): Boolean {
         val oldRoute = routes[client]
         val oldWayOut = wayOut[client]
         claim(client, route, stops, end)
         try {
-            return waitsForItself(client)
+            return waitsForItself(client) || route.firstOrNull()?.let { !isSafe(client, it, behindFirst) } == true
         } finally {
             if (oldRoute == null) routes.remove(client) else routes[client] = oldRoute
             if (oldWayOut == null) wayOut.remove(client) else wayOut[client] = oldWayOut
@@ -141,7 +160,7 @@ internal class RouteSafety(
             ahead.required.any { isTaken(it, self) } ||
                 (ahead.options.isNotEmpty() && ahead.options.all { option -> option.any { isTaken(it, self) } })
 
-        private fun isTaken(key: String, self: String): Boolean =
+        fun isTaken(key: String, self: String): Boolean =
             (self != grantee && key in held) || holders(key).any { it != self && it in waiting }
 
         private fun settle(start: LookAhead) {

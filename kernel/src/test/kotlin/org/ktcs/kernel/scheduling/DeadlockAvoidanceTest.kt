@@ -42,6 +42,17 @@ class DeadlockAvoidanceTest : FunSpec({
         v4.granted shouldContainExactly listOf(setOf("E-D", "D"))
     }
 
+    test("a new route whose first step the rule would hold back counts as blocked") {
+        val (f, _) = squareWithThree()
+        val v4 = f.client("v4")
+        f.scheduler.allocateNow(v4, setOf("E"))
+
+        // D is free, so v4 would not wait for itself where it stands; but once on D it would need A, and v1, v2 and
+        // v3 would wait for it: a reroute onto this route would break no deadlock, the vehicle would only wait at E.
+        f.scheduler.claimWouldBeBlocked(v4, listOf(setOf("E-D", "D"), setOf("D-A", "A"))) shouldBe true
+        f.scheduler.claimIsBlocked(v4) shouldBe false
+    }
+
     test("vehicles rotating through a loop with one free point are never held back") {
         val (f, vehicles) = squareWithThree()
 

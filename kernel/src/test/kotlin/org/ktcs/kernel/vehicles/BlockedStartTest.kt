@@ -77,6 +77,39 @@ class BlockedStartTest : FunSpec({
         }
     }
 
+    // A two-way aisle P (a station stub) - Y - W1 - W2 - T, and a longer one-way way round Y -> E1 -> E2 -> E3 -> T.
+    // VB, on W2, is sent to the station at P, where VA stands; then VA is sent to T. VA's first step (out of the stub)
+    // has no alternative, but the vehicle it would meet head-on stands two steps further on.
+    test("a vehicle whose claim would meet a waiting vehicle head-on on a two-way aisle takes the way round") {
+        val aisle = listOf("P" to "Y", "Y" to "W1", "W1" to "W2", "W2" to "T").map { (from, to) ->
+            Path("$from --- $to", from, to, length = 2000, maxReverseVelocity = 1000)
+        }
+        val wayRound = listOf("Y" to "E1", "E1" to "E2", "E2" to "E3", "E3" to "T").map { (from, to) ->
+            Path("$from --- $to", from, to, length = 2000)
+        }
+        val aislePlant = PlantModel(
+            "two-way aisle with a way round",
+            points = listOf("P", "Y", "W1", "W2", "T", "E1", "E2", "E3").map { Point(it) },
+            paths = aisle + wayRound,
+            vehicles = listOf("P", "W2").map { Vehicle("V$it", properties = mapOf("loopback:initialPosition" to it)) },
+            locationTypes = listOf(LocationType("station", setOf("Load"))),
+            locations = listOf(Location("S", "station", links = listOf(Link("P")))),
+        )
+        SimulationKernel(aislePlant, config, listOf(drivers)).use { kernel ->
+            kernel.send("VW2", Destination("S", "Load"))
+            kernel.context.runUntilTime(kernel.context.elapsedMillis() + 500)
+            kernel.send("VP", Destination("T", Operations.MOVE))
+            kernel.context.runUntil {
+                kernel.core.orders.all().all { it.state.isFinal } || kernel.context.elapsedMillis() > 600_000L
+            }
+
+            kernel.core.orders.all().map { it.state }.shouldContainOnly(TransportOrderState.FINISHED)
+            kernel.core.watchdog.detected shouldBe 0
+            val route = kernel.core.orders.require("To-T").driveOrders.single().route!!
+            route.steps.mapNotNull { it.path } shouldBe listOf("P --- Y") + wayRound.map { it.name }
+        }
+    }
+
     test("an order that starts with an operation where the vehicle stands takes the detour after the operation") {
         SimulationKernel(plant, config, listOf(drivers)).use { kernel ->
             kernel.startsWithoutDeadlock(Destination("S", "Load"), Destination("B2", Operations.MOVE))
