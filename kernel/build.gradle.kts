@@ -33,6 +33,7 @@ dependencies {
     api(libs.flyway.core)
     api(libs.flyway.database.postgresql)
     runtimeOnly(libs.swagger.ui)
+    runtimeOnly(variantOf(libs.netty.transport.native.epoll) { classifier("linux-x86_64") })
 
     testImplementation(libs.mockk)
     testImplementation(libs.ktor.server.test.host)

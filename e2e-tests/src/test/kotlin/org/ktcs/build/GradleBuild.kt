@@ -49,6 +49,7 @@ class GradleBuild(
             ?: match(FIND_LIBRARY)?.let { catalog.libraries[it] ?: "$it (not in the catalog)" }
             ?: match(KOTLIN_MODULE)?.let { "org.jetbrains.kotlin:kotlin-$it" }
             ?: match(ACCESSOR)?.let { catalog.libraryFor(it) ?: "libs.$it (not in the catalog)" }
+            ?: match(VARIANT)?.let { catalog.libraryFor(it) ?: "libs.$it (not in the catalog)" }
             ?: match(COORDINATES)
             ?: "$argument (unreadable)"
     }
@@ -62,6 +63,9 @@ class GradleBuild(
         private val FIND_LIBRARY = Regex("""^libs\.findLibrary\("([^"]+)"\)""")
         private val KOTLIN_MODULE = Regex("""^kotlin\("([^"]+)"\)$""")
         private val ACCESSOR = Regex("""^libs\.([\w.]+)$""")
+
+        // variantOf(libs.x) { classifier("...") }: a library of the catalog with a classifier (a native jar).
+        private val VARIANT = Regex("""^variantOf\(libs\.([\w.]+)\)""")
         private val COORDINATES = Regex("""^"([^":]+:[^":]+)(?::[^"]*)?"$""")
         private val LINE_COMMENT = Regex("""(^|\s)//.*$""")
         private val KOTLIN_PLUGIN = listOf("org.jetbrains.kotlin.jvm", "kotlin(\"jvm\")", "libs.plugins.kotlin.jvm")

@@ -67,6 +67,11 @@ object KtcsSettings {
         "Events queued for one WebSocket client; a client that falls further behind is told it missed events and " +
             "gets fresh snapshots.",
     )
+    val webEngine = enumSetting(
+        "web.engine",
+        WebEngine.NETTY,
+        "HTTP engine of the web API: NETTY or CIO (Ktor's own). HTTPS (web.tls.*) always runs on Netty.",
+    )
     val logLevel = enumSetting(
         "log.level",
         LogLevel.INFO,
@@ -221,6 +226,7 @@ object KtcsSettings {
     ) + TlsSettings.all + listOf(
         webMaxRequestBodySize,
         webSocketBufferSize,
+        webEngine,
         logLevel,
         kernelEnableDrivers,
         kernelInitialIntegrationLevel,
@@ -244,6 +250,9 @@ object KtcsSettings {
         dispatcherRecoveryThreshold,
     ) + WatchdogSettings.all + extensionsDirectory + dataDirectory + PersistenceSettings.all
 }
+
+/** The HTTP engine of the web API (`web.engine`). */
+enum class WebEngine { NETTY, CIO }
 
 /** Log levels a user can choose, in SLF4J's names. */
 enum class LogLevel { ERROR, WARN, INFO, DEBUG, TRACE }

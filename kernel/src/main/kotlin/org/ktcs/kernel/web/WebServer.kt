@@ -6,21 +6,26 @@ import io.ktor.server.application.ApplicationStopPreparing
 import io.ktor.server.application.install
 import io.ktor.server.cio.CIO
 import io.ktor.server.engine.EmbeddedServer
+import io.ktor.server.engine.connector
 import io.ktor.server.engine.embeddedServer
 import io.ktor.server.engine.sslConnector
 import io.ktor.server.netty.Netty
+import io.ktor.server.netty.NettyApplicationEngine
 import io.ktor.server.plugins.contentnegotiation.ContentNegotiation
 import io.ktor.server.response.respond
 import io.ktor.server.routing.post
 import io.ktor.server.routing.route
 import io.ktor.server.routing.routing
 import io.ktor.server.websocket.WebSockets
+import io.netty.buffer.UnpooledByteBufAllocator
+import io.netty.channel.ChannelOption
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
 import org.ktcs.api.service.KernelServices
 import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.extension.web.WebContribution
 import org.ktcs.kernel.config.KtcsSettings
+import org.ktcs.kernel.config.WebEngine
 import org.ktcs.kernel.events.SubscriberTooSlowException
 import org.ktcs.kernel.web.docs.ApiDocument
 import org.ktcs.kernel.web.docs.docsRoutes
@@ -64,7 +69,10 @@ fun interface ShutdownRequest {
     fun request()
 }
 
-/** The HTTP(S) server of the kernel application (Ktor: CIO for HTTP, Netty for HTTPS). */
+/**
+ * The HTTP(S) server of the kernel application: Ktor on Netty, or on Ktor's CIO engine with `web.engine=CIO` (plain
+ * HTTP only). Netty spends about a third of CIO's CPU per request and answers sooner (README, "Performance").
+ */
 class WebServer(
     private val config: KtcsConfig,
     private val version: KernelVersion,
@@ -76,8 +84,8 @@ class WebServer(
     private var server: EmbeddedServer<*, *>? = null
 
     /**
-     * Starts listening and returns the base URL it serves, with the port actually bound: plain HTTP on the CIO
-     * engine, or HTTPS on Netty when `web.tls.*` is set (CIO cannot serve TLS; Netty is loaded only then).
+     * Starts listening and returns the base URL it serves, with the port actually bound: HTTPS when `web.tls.*` is
+     * set (always on Netty: CIO cannot serve TLS), else plain HTTP on the engine `web.engine` names.
      */
     fun start(): String {
         val host = config[KtcsSettings.webBindAddress]
@@ -94,13 +102,22 @@ class WebServer(
             webModule(version, services, options, shutdown, contributions, eventTap)
         }
         val tls = WebTls.from(config)
-        val started = if (tls == null) {
+        val engine = config[KtcsSettings.webEngine]
+        val started = if (tls == null && engine == WebEngine.CIO) {
             embeddedServer(CIO, port = port, host = host, module = module)
         } else {
             embeddedServer(Netty, configure = {
-                sslConnector(tls.keyStore, tls.alias, { tls.password }, { tls.password }) {
-                    this.host = host
-                    this.port = port
+                sizedForFewCores()
+                if (tls == null) {
+                    connector {
+                        this.host = host
+                        this.port = port
+                    }
+                } else {
+                    sslConnector(tls.keyStore, tls.alias, { tls.password }, { tls.password }) {
+                        this.host = host
+                        this.port = port
+                    }
                 }
             }, module = module)
         }.start(wait = false)
@@ -131,6 +148,19 @@ class WebServer(
         server?.stop(gracePeriodMillis = 200, timeoutMillis = 2_000)
         server = null
     }
+}
+
+/**
+ * One event loop per core does the I/O and runs the handlers (a request is read, handled and answered on the loop of
+ * its connection, without handing it to another thread pool), and one accepts connections. Buffers are not pooled:
+ * a request and its answer are small, and a pool's arenas cost resident memory an idle kTCS would keep.
+ */
+private fun NettyApplicationEngine.Configuration.sizedForFewCores() {
+    connectionGroupSize = 1
+    workerGroupSize = Runtime.getRuntime().availableProcessors()
+    callGroupSize = workerGroupSize
+    shareWorkGroup = true
+    configureBootstrap = { childOption(ChannelOption.ALLOCATOR, UnpooledByteBufAllocator.DEFAULT) }
 }
 
 /**

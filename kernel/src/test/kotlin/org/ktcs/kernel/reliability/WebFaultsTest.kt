@@ -62,7 +62,7 @@ class WebFaultsTest : FunSpec({
                 socket.getInputStream().readBytes().decodeToString()
             }
             val errors = errorsLoggedWhile {
-                // The engine (CIO) answers these itself, before the request reaches kTCS's routes.
+                // The engine answers these itself, before the request reaches kTCS's routes.
                 post("zz\r\n{\r\n0\r\n\r\n") shouldContain " 400 "
                 post("10\r\n{\"destinations\":\r\nzz\r\n]}\r\n0\r\n\r\n") shouldContain " 400 "
             }
