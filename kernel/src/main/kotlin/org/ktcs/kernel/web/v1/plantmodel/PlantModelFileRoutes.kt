@@ -7,6 +7,8 @@ import io.ktor.server.response.respondText
 import io.ktor.server.routing.Route
 import io.ktor.server.routing.post
 import io.ktor.utils.io.toByteArray
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.withContext
 import kotlinx.serialization.Serializable
 import org.ktcs.api.error.InvalidRequestException
 import org.ktcs.kernel.persistence.ModelFileException
@@ -38,24 +40,28 @@ private fun ModelProblem.toDto() =
 /**
  * The kernel's model-file reader, writer and validator for clients that edit a model (the overview's modelling
  * mode): they work on the model's JSON and leave openTCS's file format and the validation rules to the kernel.
+ * Reading, writing and validating a large plant takes a while: it runs on the default dispatcher, not on the web
+ * server's event loop, whose other connections would wait meanwhile.
  */
 fun Route.plantModelFileRoutes() {
     post("/plantModel/fromFile") {
         val bytes = call.receiveChannel().toByteArray()
         if (bytes.isEmpty()) throw InvalidRequestException("the body is empty; send an openTCS plant-model file")
         val read = try {
-            PlantModelFiles.readWithWarnings(bytes.inputStream(), "uploaded file")
+            withContext(Dispatchers.Default) { PlantModelFiles.readWithWarnings(bytes.inputStream(), "uploaded file") }
         } catch (error: ModelFileException) {
             throw InvalidRequestException(error.message ?: "not a readable plant-model file")
         }
         call.respond(ModelFromFileDto(read.model.toDto(), read.warnings.map { it.toDto() }))
     }
     post("/plantModel/toFile") {
-        val model = call.receiveJson<PlantModelDto>().toCheckedDomain()
-        call.respondText(PlantModelFiles.writeToString(model), ContentType.Application.Xml)
+        val model = call.receiveJson<PlantModelDto>()
+        val file = withContext(Dispatchers.Default) { PlantModelFiles.writeToString(model.toCheckedDomain()) }
+        call.respondText(file, ContentType.Application.Xml)
     }
     post("/plantModel/validation") {
-        val problems = PlantModelValidator.validate(call.receiveJson<PlantModelDto>().toCheckedDomain())
+        val model = call.receiveJson<PlantModelDto>()
+        val problems = withContext(Dispatchers.Default) { PlantModelValidator.validate(model.toCheckedDomain()) }
         call.respond(ModelValidationDto(problems.none { it.isError }, problems.map { it.toDto() }))
     }
 }

@@ -6,6 +6,8 @@ import io.ktor.server.routing.Route
 import io.ktor.server.routing.get
 import io.ktor.server.routing.post
 import io.ktor.server.routing.put
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.withContext
 import kotlinx.serialization.Serializable
 import org.ktcs.api.error.InvalidRequestException
 import org.ktcs.api.error.ObjectUnknownException
@@ -31,7 +33,9 @@ internal fun PlantModelDto.toCheckedDomain(): PlantModel = try {
 fun Route.plantModelRoutes(services: KernelServices) {
     get("/plantModel") { call.respond(services.plantModel.plantModel().toDto()) }
     put("/plantModel") {
-        services.plantModel.replacePlantModel(call.receiveJson<PlantModelDto>().toCheckedDomain())
+        val model = call.receiveJson<PlantModelDto>()
+        // Checking a large plant takes a while; not on the web server's event loop.
+        services.plantModel.replacePlantModel(withContext(Dispatchers.Default) { model.toCheckedDomain() })
         call.respond(HttpStatusCode.OK)
     }
     post("/plantModel/topologyUpdateRequest") {
