@@ -16,6 +16,7 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
             val stats = ktcs.stats
             val cpuStart = stats?.cpuSeconds()
             val threadStart = stats?.threadCpuSeconds(DemoWorkload.KERNEL_THREAD)
+            val threadsStart = stats?.threads()
             val start = System.nanoTime()
             OrderPosting.post(ktcs.client, batch, DemoWorkload.CONCURRENT_CLIENTS)
             val end = awaitBatch(watcher, prefix)
@@ -35,6 +36,7 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
                         )
                     }
                 }
+                threadsStart?.let { recordThreads(ThreadCpu.byKind(it, stats.threads()), finished) }
             }
             val wall = (end - start) / OrderPosting.NANOS_PER_SECOND
             figures.record("makespan_wall_s", wall)
@@ -50,6 +52,13 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
             figures.record("event_stream_missed", watcher.missedEvents().toDouble())
             figures.record("rss_end_mib", stats?.rssMib())
         }
+    }
+
+    /** The CPU per finished order of the kinds of thread that used most, e.g. `cpu_ms_per_order.kernel: 7.8`. */
+    private fun recordThreads(kinds: List<Pair<String, Double>>, finished: Int) {
+        val shown = kinds.take(THREAD_KINDS_SHOWN)
+        shown.forEach { (kind, seconds) -> figures.record("cpu_ms_per_order.$kind", seconds * MILLIS / finished) }
+        figures.record("cpu_ms_per_order.(other threads)", kinds.drop(THREAD_KINDS_SHOWN).sumOf { it.second } * MILLIS / finished)
     }
 
     /** Waits until every order of the batch is final or none became final for a while; returns when it stopped. */
@@ -83,5 +92,6 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
         const val MEDIAN = 0.5
         const val P99 = 0.99
         const val POLL_MILLIS = 10L
+        const val THREAD_KINDS_SHOWN = 8
     }
 }

@@ -24,15 +24,15 @@ import org.ktcs.kernel.web.v1.V1Json
  * Events wait in a buffer of [capacity]; a client that falls that far behind is told it missed events and gets
  * fresh snapshots, so it never slows the kernel or the other clients.
  */
-class WsSession(
+class WsSession internal constructor(
     private val socket: DefaultWebSocketServerSession,
     private val services: KernelServices,
     private val capacity: Int = 1000,
+    private val encoded: EncodedObjects = EncodedObjects(),
 ) {
     private val json = V1Json.json
     private var topics = emptySet<WsTopic>()
     private var sequence = 0L
-    private val encoded = EncodedObjects()
 
     suspend fun run() = coroutineScope {
         var feed: Job? = null
@@ -112,15 +112,15 @@ class WsSession(
         // Encoding is the costly part: events of topics the client did not ask for are not encoded at all.
         if (WsTopics.topicOf(event) !in topics) return
         val change = WsTopics.change(event, encoded) ?: return
-        sendText(change.eventText(sequence++))
+        sendFrame(Frame.Text(true, change.eventBytes(sequence++)))
     }
 
-    private suspend fun send(message: WsServerMessage) = sendText(
-        json.encodeToString(WsServerMessage.serializer(), message),
+    private suspend fun send(message: WsServerMessage) = sendFrame(
+        Frame.Text(true, utf8(json.encodeToString(WsServerMessage.serializer(), message))),
     )
 
-    private suspend fun sendText(text: String) {
-        socket.send(Frame.Text(text))
+    private suspend fun sendFrame(frame: Frame) {
+        socket.send(frame)
         // Sending only queues the frame, without limit; waiting for it to be written is what lets a client that
         // reads slowly hold this session up, so that its event buffer fills and it is told it missed events.
         socket.flush()

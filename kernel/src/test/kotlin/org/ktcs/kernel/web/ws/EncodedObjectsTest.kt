@@ -22,8 +22,8 @@ class EncodedObjectsTest : FunSpec({
         val second = WsTopics.change(VehicleEvent(parked, moved), encoded)!!
 
         second.previous shouldBeSameInstanceAs first.current
-        second.current shouldBe V1Json.json.encodeToString(moved.toSseDto())
-        second.current shouldNotBe second.previous
+        second.current!!.decodeToString() shouldBe V1Json.json.encodeToString(moved.toSseDto())
+        second.current!!.decodeToString() shouldNotBe second.previous!!.decodeToString()
     }
 
     test("an event put together from the states' texts is the message the serializer writes") {
@@ -34,20 +34,20 @@ class EncodedObjectsTest : FunSpec({
             WsEvent(
                 "vehicles",
                 7,
-                Json.parseToJsonElement(change.previous!!),
-                Json.parseToJsonElement(change.current!!),
+                Json.parseToJsonElement(change.previous!!.decodeToString()),
+                Json.parseToJsonElement(change.current!!.decodeToString()),
             ),
         )
 
-        Json.parseToJsonElement(change.eventText(7)) shouldBe Json.parseToJsonElement(serialized)
-        WsTopics.change(VehicleEvent(null, parked))!!.eventText(8) shouldContain "\"previous\":null,"
+        Json.parseToJsonElement(change.eventBytes(7).decodeToString()) shouldBe Json.parseToJsonElement(serialized)
+        WsTopics.change(VehicleEvent(null, parked))!!.eventBytes(8).decodeToString() shouldContain "\"previous\":null,"
     }
 
     test("only the most recently changed objects are kept") {
         var encodings = 0
         val last = LastEncoded<Vehicle>(2, { it.name }) {
             encodings++
-            V1Json.json.encodeToString(it.toSseDto())
+            utf8(V1Json.json.encodeToString(it.toSseDto()))
         }
         val vehicles = (1..3).map { Vehicle("Vehicle-0$it") }
         vehicles.forEach { last.of(it) }
@@ -56,5 +56,12 @@ class EncodedObjectsTest : FunSpec({
         last.of(vehicles[0])
 
         encodings shouldBe 4
+    }
+
+    test("text beyond Latin-1 goes on the wire as UTF-8") {
+        val vehicle = Vehicle("Fahrzeug-Ä→1")
+        val change = WsTopics.change(VehicleEvent(null, vehicle))!!
+
+        change.eventBytes(1).decodeToString() shouldContain "\"name\":\"Fahrzeug-Ä→1\""
     }
 })
