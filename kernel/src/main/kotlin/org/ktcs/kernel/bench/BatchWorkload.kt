@@ -50,6 +50,10 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
             figures.record("double_allocations", watcher.doubleAllocations().toDouble())
             figures.record("shared_positions", watcher.sharedPositions().toDouble())
             figures.record("event_stream_missed", watcher.missedEvents().toDouble())
+            watcher.eventCounts().toSortedMap().forEach { (topic, count) ->
+                figures.record("event_stream_events.$topic", count.toDouble())
+            }
+            figures.record("event_stream_mib", watcher.eventChars() / BYTES_PER_MIB)
             figures.record("rss_end_mib", stats?.rssMib())
         }
     }
@@ -93,5 +97,6 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
         const val P99 = 0.99
         const val POLL_MILLIS = 10L
         const val THREAD_KINDS_SHOWN = 8
+        const val BYTES_PER_MIB = 1024.0 * 1024.0
     }
 }
