@@ -93,11 +93,13 @@ class WsSession internal constructor(
             snapshots.forEach { send(it) }
             try {
                 for (event in events) {
-                    if (event is PlantModelReplacedEvent) {
-                        send(WsModelReplaced(event.model.name))
+                    val batch = waiting(event, events)
+                    val replaced = batch.indexOfFirst { it is PlantModelReplacedEvent }
+                    forward(if (replaced < 0) batch else batch.subList(0, replaced))
+                    if (replaced >= 0) {
+                        send(WsModelReplaced((batch[replaced] as PlantModelReplacedEvent).model.name))
                         break
                     }
-                    forward(event)
                 }
             } catch (error: SubscriberTooSlowException) {
                 send(WsMissed("the client read too slowly; more than $capacity events were waiting"))
@@ -108,11 +110,22 @@ class WsSession internal constructor(
         error("unreachable")
     }
 
-    private suspend fun forward(event: KernelEvent) {
+    /** [first] and the events waiting behind it, at most [BATCH]: sent together, merged, with one flush. */
+    private fun waiting(first: KernelEvent, events: Channel<KernelEvent>): List<KernelEvent> {
+        val batch = arrayListOf(first)
+        while (batch.size < BATCH) batch += events.tryReceive().getOrNull() ?: break
+        return batch
+    }
+
+    private suspend fun forward(batch: List<KernelEvent>) {
         // Encoding is the costly part: events of topics the client did not ask for are not encoded at all.
-        if (WsTopics.topicOf(event) !in topics) return
-        val change = WsTopics.change(event, encoded) ?: return
-        sendFrame(Frame.Text(true, change.eventBytes(sequence++)))
+        val wanted = batch.filter { WsTopics.topicOf(it) in topics }
+        if (wanted.isEmpty()) return
+        for (event in WsBatch.coalesce(wanted)) {
+            val change = WsTopics.change(event, encoded) ?: continue
+            socket.send(Frame.Text(true, change.eventBytes(sequence++)))
+        }
+        flush()
     }
 
     private suspend fun send(message: WsServerMessage) = sendFrame(
@@ -121,6 +134,10 @@ class WsSession internal constructor(
 
     private suspend fun sendFrame(frame: Frame) {
         socket.send(frame)
+        flush()
+    }
+
+    private suspend fun flush() {
         // Sending only queues the frame, without limit; waiting for it to be written is what lets a client that
         // reads slowly hold this session up, so that its event buffer fills and it is told it missed events.
         socket.flush()
@@ -128,3 +145,6 @@ class WsSession internal constructor(
 }
 
 private val KNOWN_TOPICS = WsTopic.entries.map { it.wireName }
+
+/** At most this many waiting events go out together (merged where they can be, with one flush). */
+private const val BATCH = 256
