@@ -32,7 +32,7 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
     private val socket: WebSocket = client.httpClient().newWebSocketBuilder()
         .buildAsync(client.webSocketUri(), Listener())
         .get(CONNECT_SECONDS, TimeUnit.SECONDS)
-        .also { it.sendText("""{"type":"subscribe","topics":["vehicles","transportOrders","notifications"]}""", true) }
+        .also { it.sendText(SUBSCRIPTION, true) }
 
     /** The states of the orders whose names start with [prefix]. */
     fun states(
@@ -167,5 +167,9 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
 
     private companion object {
         const val CONNECT_SECONDS = 10L
+
+        // As the browser overview subscribes: only a removed object's previous state.
+        const val SUBSCRIPTION =
+            """{"type":"subscribe","topics":["vehicles","transportOrders","notifications"],"previous":false}"""
     }
 }

@@ -32,6 +32,7 @@ class WsSession internal constructor(
 ) {
     private val json = V1Json.json
     private var topics = emptySet<WsTopic>()
+    private var withPrevious = true
     private var sequence = 0L
 
     suspend fun run() = coroutineScope {
@@ -39,9 +40,10 @@ class WsSession internal constructor(
         try {
             for (frame in socket.incoming) {
                 if (frame !is Frame.Text) continue
-                val requested = parseSubscription(frame.readText()) ?: continue
+                val message = parseSubscription(frame.readText()) ?: continue
                 feed?.cancelAndJoin()
-                topics = requested
+                topics = message.topics.mapNotNullTo(LinkedHashSet(), WsTopic::of)
+                withPrevious = message.previous
                 feed = launch { streamForever() }
             }
         } catch (error: FrameTooBigException) {
@@ -52,7 +54,7 @@ class WsSession internal constructor(
         feed?.cancel()
     }
 
-    private suspend fun parseSubscription(text: String): Set<WsTopic>? {
+    private suspend fun parseSubscription(text: String): WsClientMessage? {
         val message = try {
             json.decodeFromString<WsClientMessage>(text)
         } catch (error: SerializationException) {
@@ -70,7 +72,7 @@ class WsSession internal constructor(
         if (unknown.isNotEmpty()) {
             return null.also { send(WsError("unknown topics $unknown; known: $KNOWN_TOPICS")) }
         }
-        return message.topics.mapNotNullTo(LinkedHashSet(), WsTopic::of)
+        return message
     }
 
     private suspend fun streamForever(): Nothing = coroutineScope {
@@ -123,7 +125,7 @@ class WsSession internal constructor(
         if (wanted.isEmpty()) return
         for (event in WsBatch.coalesce(wanted)) {
             val change = WsTopics.change(event, encoded) ?: continue
-            socket.send(Frame.Text(true, change.eventBytes(sequence++)))
+            socket.send(Frame.Text(true, change.eventBytes(sequence++, withPrevious)))
         }
         flush()
     }

@@ -126,11 +126,13 @@ internal class EncodedObjects(capacity: Int = DEFAULT_CAPACITY) {
 internal class Change(val topic: WsTopic, val previous: ByteArray?, val current: ByteArray?) {
     /**
      * The [WsEvent] message numbered [seq] as UTF-8 JSON, put together from the states' bytes: copying them is all a
-     * session does per event, however many sessions follow it.
+     * session does per event, however many sessions follow it. Without [withPrevious], `previous` is `null` unless the
+     * object was removed.
      */
-    fun eventBytes(seq: Long): ByteArray {
+    fun eventBytes(seq: Long, withPrevious: Boolean = true): ByteArray {
         val head = utf8("""{"type":"event","topic":"${topic.wireName}","seq":$seq,"previous":""")
-        val previous = previous ?: NULL
+        // A client that asked for no previous states still needs a removed object's, to know which one went.
+        val previous = previous?.takeIf { withPrevious || current == null } ?: NULL
         val current = current ?: NULL
         val out = ByteArray(head.size + previous.size + CURRENT.size + current.size + TAIL.size)
         var at = 0

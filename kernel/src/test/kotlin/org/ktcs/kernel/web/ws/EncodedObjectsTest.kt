@@ -7,6 +7,9 @@ import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.types.shouldBeSameInstanceAs
 import kotlinx.serialization.encodeToString
 import kotlinx.serialization.json.Json
+import kotlinx.serialization.json.JsonNull
+import kotlinx.serialization.json.jsonObject
+import kotlinx.serialization.json.jsonPrimitive
 import org.ktcs.api.event.VehicleEvent
 import org.ktcs.api.model.Vehicle
 import org.ktcs.kernel.web.v1.V1Json
@@ -56,6 +59,17 @@ class EncodedObjectsTest : FunSpec({
         last.of(vehicles[0])
 
         encodings shouldBe 4
+    }
+
+    test("a client that wants no previous states gets a removed object's all the same") {
+        val parked = Vehicle("Vehicle-01", currentPosition = "Point-0001")
+        val moved = WsTopics.change(VehicleEvent(parked, parked.copy(currentPosition = "Point-0002")))!!
+        val removed = WsTopics.change(VehicleEvent(parked, null))!!
+
+        fun previousOf(change: Change) =
+            Json.parseToJsonElement(change.eventBytes(1, withPrevious = false).decodeToString()).jsonObject["previous"]
+        previousOf(moved) shouldBe JsonNull
+        previousOf(removed)!!.jsonObject["name"]!!.jsonPrimitive.content shouldBe "Vehicle-01"
     }
 
     test("text beyond Latin-1 goes on the wire as UTF-8") {
