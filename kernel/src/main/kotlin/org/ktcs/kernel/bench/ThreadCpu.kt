@@ -7,7 +7,10 @@ package org.ktcs.kernel.bench
  */
 object ThreadCpu {
     /** CPU seconds per kind of thread between [before] and [after], largest first. */
-    fun byKind(before: Map<Long, Pair<String, Double>>, after: Map<Long, Pair<String, Double>>): List<Pair<String, Double>> =
+    fun byKind(
+        before: Map<Long, Pair<String, Double>>,
+        after: Map<Long, Pair<String, Double>>,
+    ): List<Pair<String, Double>> =
         after.entries
             .groupBy({ kind(it.value.first) }) { (id, thread) -> thread.second - (before[id]?.second ?: 0.0) }
             .mapValues { (_, seconds) -> seconds.sum() }
