@@ -62,12 +62,8 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
     private fun recordThreads(kinds: List<Pair<String, Double>>, finished: Int) {
         val shown = kinds.take(THREAD_KINDS_SHOWN)
         shown.forEach { (kind, seconds) -> figures.record("cpu_ms_per_order.$kind", seconds * MILLIS / finished) }
-        figures.record(
-            "cpu_ms_per_order.(other threads)",
-            kinds.drop(THREAD_KINDS_SHOWN).sumOf {
-                it.second
-            } * MILLIS / finished,
-        )
+        val others = kinds.drop(THREAD_KINDS_SHOWN).sumOf { it.second }
+        figures.record("cpu_ms_per_order.(other threads)", others * MILLIS / finished)
     }
 
     /** Waits until every order of the batch is final or none became final for a while; returns when it stopped. */
