@@ -113,9 +113,7 @@ internal class LastEncoded<T : Any>(
 /** The [LastEncoded] vehicles and transport orders that every WebSocket session of a server shares. */
 internal class EncodedObjects(capacity: Int = DEFAULT_CAPACITY) {
     val vehicles = LastEncoded<Vehicle>(capacity, { it.name }) { utf8(V1Json.json.encodeToString(it.toSseDto())) }
-    val orders = LastEncoded<TransportOrder>(capacity, { it.name }) {
-        utf8(V1Json.json.encodeToString(it.toSseDto()))
-    }
+    val orders = LastEncoded<TransportOrder>(capacity, { it.name }, EncodedOrders::utf8)
 
     private companion object {
         const val DEFAULT_CAPACITY = 512

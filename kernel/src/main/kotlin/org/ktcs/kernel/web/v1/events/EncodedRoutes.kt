@@ -18,21 +18,29 @@ import org.ktcs.kernel.web.v1.orders.toDto
 internal object EncodedRoutes {
     private const val CAPACITY = 512
 
-    private val last = object : LinkedHashMap<String, Pair<Route, JsonElement>>(16, 0.75f, true) {
-        override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, Pair<Route, JsonElement>>) =
+    private val last = object : LinkedHashMap<String, Pair<Route, EncodedRoute>>(16, 0.75f, true) {
+        override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, Pair<Route, EncodedRoute>>) =
             size > CAPACITY
     }
 
     /** [route], the route of [driveOrder] (named by its transport order and its own name), as [RouteDto] JSON. */
-    fun of(driveOrder: String, route: Route?): JsonElement {
-        if (route == null) return JsonNull
+    fun of(driveOrder: String, route: Route?): JsonElement = route?.let { encoded(driveOrder, it).json } ?: JsonNull
+
+    /** The same as UTF-8, `null` for no route (see [of]). */
+    fun utf8Of(driveOrder: String, route: Route?): ByteArray? = route?.let { encoded(driveOrder, it).utf8 }
+
+    private fun encoded(driveOrder: String, route: Route): EncodedRoute {
         synchronized(last) { last[driveOrder]?.takeIf { it.first === route }?.let { return it.second } }
-        val encoded = encode(route)
+        val encoded = EncodedRoute(V1Json.json.encodeToString(RouteDto.serializer(), route.toDto()))
         synchronized(last) { last[driveOrder] = route to encoded }
         return encoded
     }
 
-    @OptIn(ExperimentalSerializationApi::class)
-    private fun encode(route: Route): JsonElement =
-        JsonUnquotedLiteral(V1Json.json.encodeToString(RouteDto.serializer(), route.toDto()))
+    /** One route's JSON, as a literal to put in a tree and as UTF-8 (made when first asked for). */
+    private class EncodedRoute(text: String) {
+        @OptIn(ExperimentalSerializationApi::class)
+        val json: JsonElement = JsonUnquotedLiteral(text)
+
+        val utf8: ByteArray by lazy { text.toByteArray(Charsets.UTF_8) }
+    }
 }
