@@ -11,6 +11,7 @@ import kotlinx.coroutines.Job
 import kotlinx.coroutines.cancelAndJoin
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
 import kotlinx.serialization.SerializationException
 import org.ktcs.api.event.KernelEvent
@@ -112,11 +113,24 @@ class WsSession internal constructor(
         error("unreachable")
     }
 
-    /** [first] and the events waiting behind it, at most [BATCH]: sent together, merged, with one flush. */
-    private fun waiting(first: KernelEvent, events: Channel<KernelEvent>): List<KernelEvent> {
+    /**
+     * [first] and the events behind it, at most [BATCH]: sent together, merged, with one flush. When nothing else
+     * waits yet, the events of the next [LINGER_MILLIS] join it: a kernel step publishes several, and waking the
+     * session, encoding and flushing for each alone costs most of the stream's CPU; a client sees them a few ms
+     * later.
+     */
+    private suspend fun waiting(first: KernelEvent, events: Channel<KernelEvent>): List<KernelEvent> {
         val batch = arrayListOf(first)
-        while (batch.size < BATCH) batch += events.tryReceive().getOrNull() ?: break
+        drain(events, batch)
+        if (batch.size == 1) {
+            delay(LINGER_MILLIS)
+            drain(events, batch)
+        }
         return batch
+    }
+
+    private fun drain(events: Channel<KernelEvent>, batch: MutableList<KernelEvent>) {
+        while (batch.size < BATCH) batch += events.tryReceive().getOrNull() ?: break
     }
 
     private suspend fun forward(batch: List<KernelEvent>) {
@@ -150,3 +164,6 @@ private val KNOWN_TOPICS = WsTopic.entries.map { it.wireName }
 
 /** At most this many waiting events go out together (merged where they can be, with one flush). */
 private const val BATCH = 256
+
+/** How long a lone event waits for others to go out with. */
+private const val LINGER_MILLIS = 5L
