@@ -10,8 +10,7 @@ import org.ktcs.api.model.Vehicle
  * other. A vehicle's change that only moved it (its resources, state, proc state and order stay as they were) is
  * therefore merged with the vehicle's next change when no other vehicle changed in between: one event from the state
  * before the first to the state after the second. Every allocation, state and order change still reaches the client
- * as its own event, vehicles' events keep the kernel's order, and only what was already waiting is merged, so no
- * event is held back.
+ * as its own event, and vehicles' events keep the kernel's order.
  */
 internal object WsBatch {
     fun coalesce(events: List<KernelEvent>): List<KernelEvent> {
