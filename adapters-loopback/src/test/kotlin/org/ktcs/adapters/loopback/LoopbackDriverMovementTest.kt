@@ -94,6 +94,30 @@ class LoopbackDriverMovementTest : FunSpec({
         harness.context.timesOf<Report.PrecisePosition>().filter { it > 0 } shouldBe listOf(11_000L, 22_000L)
     }
 
+    test("a vehicle whose timer runs late starts its next step when the timer was due and catches up") {
+        for (late in listOf(0L, 1L, 250L, 3_000L)) {
+            val harness = Harness()
+            harness.send(aToB)
+            harness.send(bToC)
+            harness.clock.advanceTo(10_999)
+            // The kernel thread was busy: A--B's end, due at 11 s, runs at 11 s + late.
+            harness.clock.jumpTo(11_000 + late)
+            harness.clock.runUntilIdle()
+            // B--C still ends at 22 s, as on time; a vehicle that started it late would arrive late as well.
+            harness.executedAt() shouldContainExactly listOf(11_000L + late, 22_000L)
+        }
+    }
+
+    test("a vehicle that waited for its next command does not make up the wait") {
+        val harness = Harness()
+        harness.send(aToB)
+        harness.clock.advanceTo(12_000)
+        harness.clock.advanceTo(15_000)
+        harness.send(bToC)
+        harness.clock.runUntilIdle()
+        harness.executedAt() shouldContainExactly listOf(12_000L, 27_000L)
+    }
+
     test("a command that arrives after the vehicle reached the end of its path, before its arrival timer fired") {
         for (late in listOf(0L, 1L, 7L, 250L, 3_000L)) {
             val harness = Harness()

@@ -32,7 +32,10 @@ class VirtualClock(private val start: Instant = Instant.parse("2026-01-01T00:00:
         return Cancellable { queue.remove(scheduled) }
     }
 
-    /** Stands at [millis] without running what is due by then: a timer that fires late, as a busy machine's do. */
+    /**
+     * Stands at [millis] without running what is due by then: the timers due meanwhile then run late, at [millis],
+     * as a busy machine's do.
+     */
     fun jumpTo(millis: Long) {
         nowMillis = maxOf(nowMillis, millis)
     }
@@ -56,7 +59,7 @@ class VirtualClock(private val start: Instant = Instant.parse("2026-01-01T00:00:
 
     private fun runNext() {
         val next = queue.poll()
-        nowMillis = next.at
+        nowMillis = maxOf(nowMillis, next.at)
         actionsRun++
         next.action()
     }

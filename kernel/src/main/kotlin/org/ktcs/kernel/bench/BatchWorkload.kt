@@ -16,6 +16,7 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
             val stats = ktcs.stats
             val cpuStart = stats?.cpuSeconds()
             val threadStart = stats?.threadCpuSeconds(DemoWorkload.KERNEL_THREAD)
+            val threadsStart = stats?.threads()
             val start = System.nanoTime()
             OrderPosting.post(ktcs.client, batch, DemoWorkload.CONCURRENT_CLIENTS)
             val end = awaitBatch(watcher, prefix)
@@ -35,6 +36,7 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
                         )
                     }
                 }
+                threadsStart?.let { recordThreads(ThreadCpu.byKind(it, stats.threads()), finished) }
             }
             val wall = (end - start) / OrderPosting.NANOS_PER_SECOND
             figures.record("makespan_wall_s", wall)
@@ -48,8 +50,20 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
             figures.record("double_allocations", watcher.doubleAllocations().toDouble())
             figures.record("shared_positions", watcher.sharedPositions().toDouble())
             figures.record("event_stream_missed", watcher.missedEvents().toDouble())
+            watcher.eventCounts().toSortedMap().forEach { (topic, count) ->
+                figures.record("event_stream_events.$topic", count.toDouble())
+            }
+            figures.record("event_stream_mib", watcher.eventChars() / BYTES_PER_MIB)
             figures.record("rss_end_mib", stats?.rssMib())
         }
+    }
+
+    /** The CPU per finished order of the kinds of thread that used most, e.g. `cpu_ms_per_order.kernel: 7.8`. */
+    private fun recordThreads(kinds: List<Pair<String, Double>>, finished: Int) {
+        val shown = kinds.take(THREAD_KINDS_SHOWN)
+        shown.forEach { (kind, seconds) -> figures.record("cpu_ms_per_order.$kind", seconds * MILLIS / finished) }
+        val others = kinds.drop(THREAD_KINDS_SHOWN).sumOf { it.second }
+        figures.record("cpu_ms_per_order.(other threads)", others * MILLIS / finished)
     }
 
     /** Waits until every order of the batch is final or none became final for a while; returns when it stopped. */
@@ -83,5 +97,7 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
         const val MEDIAN = 0.5
         const val P99 = 0.99
         const val POLL_MILLIS = 10L
+        const val THREAD_KINDS_SHOWN = 8
+        const val BYTES_PER_MIB = 1024.0 * 1024.0
     }
 }

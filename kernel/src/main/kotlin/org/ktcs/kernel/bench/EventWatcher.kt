@@ -26,11 +26,13 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
     private val sharedPositions = HashSet<String>()
     private var deadlocks = 0
     private var missed = 0
+    private val eventCounts = HashMap<String, Int>()
+    private var eventChars = 0L
     private val text = StringBuilder()
     private val socket: WebSocket = client.httpClient().newWebSocketBuilder()
         .buildAsync(client.webSocketUri(), Listener())
         .get(CONNECT_SECONDS, TimeUnit.SECONDS)
-        .also { it.sendText("""{"type":"subscribe","topics":["vehicles","transportOrders","notifications"]}""", true) }
+        .also { it.sendText(SUBSCRIPTION, true) }
 
     /** The states of the orders whose names start with [prefix]. */
     fun states(
@@ -47,6 +49,12 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
 
     /** How often kTCS said the bench fell behind and sent fresh snapshots (latencies of those moments are lost). */
     fun missedEvents(): Int = synchronized(lock) { missed }
+
+    /** How many events of each topic came, e.g. to see what the stream costs per finished order. */
+    fun eventCounts(): Map<String, Int> = synchronized(lock) { eventCounts.toMap() }
+
+    /** The characters of all the events that came (their JSON text). */
+    fun eventChars(): Long = synchronized(lock) { eventChars }
 
     override fun close() {
         runCatching { socket.sendClose(WebSocket.NORMAL_CLOSURE, "done").get(CONNECT_SECONDS, TimeUnit.SECONDS) }
@@ -132,6 +140,12 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
         }
     }
 
+    private fun count(message: JsonObject, chars: Int) = synchronized(lock) {
+        if (message.string("type") != "event") return
+        eventCounts.merge(message.string("topic") ?: "?", 1, Int::plus)
+        eventChars += chars
+    }
+
     private fun JsonObject.isDeadlock(): Boolean =
         string("text")?.startsWith("deadlock") == true || string("source")?.contains("deadlock") == true
 
@@ -141,7 +155,10 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
             if (last) {
                 val message = text.toString()
                 text.setLength(0)
-                runCatching { Json.parseToJsonElement(message).jsonObject }.getOrNull()?.let(::onMessage)
+                runCatching { Json.parseToJsonElement(message).jsonObject }.getOrNull()?.let {
+                    count(it, message.length)
+                    onMessage(it)
+                }
             }
             webSocket.request(1)
             return null
@@ -150,5 +167,9 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
 
     private companion object {
         const val CONNECT_SECONDS = 10L
+
+        // As the browser overview subscribes: only a removed object's previous state.
+        const val SUBSCRIPTION =
+            """{"type":"subscribe","topics":["vehicles","transportOrders","notifications"],"previous":false}"""
     }
 }

@@ -90,7 +90,8 @@ export class KtcsClient {
     this.socket = socket;
     socket.onopen = () => {
       this.attempt = 0;
-      socket.send(JSON.stringify({ type: 'subscribe', topics: TOPICS }));
+      // Only a removed object's previous state is used (its name), so the others are not sent at all.
+      socket.send(JSON.stringify({ type: 'subscribe', topics: TOPICS, previous: false }));
       this.setConnected(true);
     };
     socket.onmessage = (message) => this.receive(parseJson(message.data));

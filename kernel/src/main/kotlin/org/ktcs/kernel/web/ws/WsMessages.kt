@@ -7,9 +7,13 @@ import kotlinx.serialization.json.JsonElement
 /** The version of the WebSocket protocol; it is in every message the server sends. */
 const val WS_PROTOCOL_VERSION = 1
 
-/** What a client may say: which topics it wants. Unknown topics are refused with an error message. */
+/**
+ * What a client may say: which topics it wants. Unknown topics are refused with an error message. With [previous]
+ * `false` events carry the previous state only for a removed object (else `null`): a client that keeps the latest
+ * state of each object needs no more, and the stream is half as long.
+ */
 @Serializable
-data class WsClientMessage(val type: String, val topics: List<String> = emptyList())
+data class WsClientMessage(val type: String, val topics: List<String> = emptyList(), val previous: Boolean = true)
 
 /** What the server says. */
 @Serializable

@@ -9,5 +9,7 @@ import org.ktcs.api.service.KernelServices
  * refused by [org.ktcs.kernel.web.plugins.CrossSiteGuard]; [live] lets a shutdown say goodbye to every client.
  */
 fun Route.webSocketRoutes(services: KernelServices, bufferSize: Int, live: LiveWebSockets = LiveWebSockets()) {
-    webSocket("/ws") { live.track(this) { WsSession(this, services, bufferSize).run() } }
+    // One set of encoded states for every session: a state is encoded once however many clients follow it.
+    val encoded = EncodedObjects()
+    webSocket("/ws") { live.track(this) { WsSession(this, services, bufferSize, encoded).run() } }
 }

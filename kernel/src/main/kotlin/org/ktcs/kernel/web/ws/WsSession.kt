@@ -11,6 +11,7 @@ import kotlinx.coroutines.Job
 import kotlinx.coroutines.cancelAndJoin
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
 import kotlinx.serialization.SerializationException
 import org.ktcs.api.event.KernelEvent
@@ -24,24 +25,26 @@ import org.ktcs.kernel.web.v1.V1Json
  * Events wait in a buffer of [capacity]; a client that falls that far behind is told it missed events and gets
  * fresh snapshots, so it never slows the kernel or the other clients.
  */
-class WsSession(
+class WsSession internal constructor(
     private val socket: DefaultWebSocketServerSession,
     private val services: KernelServices,
     private val capacity: Int = 1000,
+    private val encoded: EncodedObjects = EncodedObjects(),
 ) {
     private val json = V1Json.json
     private var topics = emptySet<WsTopic>()
+    private var withPrevious = true
     private var sequence = 0L
-    private val encoded = EncodedObjects()
 
     suspend fun run() = coroutineScope {
         var feed: Job? = null
         try {
             for (frame in socket.incoming) {
                 if (frame !is Frame.Text) continue
-                val requested = parseSubscription(frame.readText()) ?: continue
+                val message = parseSubscription(frame.readText()) ?: continue
                 feed?.cancelAndJoin()
-                topics = requested
+                topics = message.topics.mapNotNullTo(LinkedHashSet(), WsTopic::of)
+                withPrevious = message.previous
                 feed = launch { streamForever() }
             }
         } catch (error: FrameTooBigException) {
@@ -52,7 +55,7 @@ class WsSession(
         feed?.cancel()
     }
 
-    private suspend fun parseSubscription(text: String): Set<WsTopic>? {
+    private suspend fun parseSubscription(text: String): WsClientMessage? {
         val message = try {
             json.decodeFromString<WsClientMessage>(text)
         } catch (error: SerializationException) {
@@ -70,7 +73,7 @@ class WsSession(
         if (unknown.isNotEmpty()) {
             return null.also { send(WsError("unknown topics $unknown; known: $KNOWN_TOPICS")) }
         }
-        return message.topics.mapNotNullTo(LinkedHashSet(), WsTopic::of)
+        return message
     }
 
     private suspend fun streamForever(): Nothing = coroutineScope {
@@ -93,11 +96,13 @@ class WsSession(
             snapshots.forEach { send(it) }
             try {
                 for (event in events) {
-                    if (event is PlantModelReplacedEvent) {
-                        send(WsModelReplaced(event.model.name))
+                    val batch = waiting(event, events)
+                    val replaced = batch.indexOfFirst { it is PlantModelReplacedEvent }
+                    forward(if (replaced < 0) batch else batch.subList(0, replaced))
+                    if (replaced >= 0) {
+                        send(WsModelReplaced((batch[replaced] as PlantModelReplacedEvent).model.name))
                         break
                     }
-                    forward(event)
                 }
             } catch (error: SubscriberTooSlowException) {
                 send(WsMissed("the client read too slowly; more than $capacity events were waiting"))
@@ -108,19 +113,47 @@ class WsSession(
         error("unreachable")
     }
 
-    private suspend fun forward(event: KernelEvent) {
-        // Encoding is the costly part: events of topics the client did not ask for are not encoded at all.
-        if (WsTopics.topicOf(event) !in topics) return
-        val change = WsTopics.change(event, encoded) ?: return
-        sendText(change.eventText(sequence++))
+    /**
+     * [first] and the events behind it, at most [BATCH]: sent together, merged, with one flush. When nothing else
+     * waits yet, the events of the next [LINGER_MILLIS] join it: a kernel step publishes several, and waking the
+     * session, encoding and flushing for each alone costs most of the stream's CPU; a client sees them a few ms
+     * later.
+     */
+    private suspend fun waiting(first: KernelEvent, events: Channel<KernelEvent>): List<KernelEvent> {
+        val batch = arrayListOf(first)
+        drain(events, batch)
+        if (batch.size == 1) {
+            delay(LINGER_MILLIS)
+            drain(events, batch)
+        }
+        return batch
     }
 
-    private suspend fun send(message: WsServerMessage) = sendText(
-        json.encodeToString(WsServerMessage.serializer(), message),
+    private fun drain(events: Channel<KernelEvent>, batch: MutableList<KernelEvent>) {
+        while (batch.size < BATCH) batch += events.tryReceive().getOrNull() ?: break
+    }
+
+    private suspend fun forward(batch: List<KernelEvent>) {
+        // Encoding is the costly part: events of topics the client did not ask for are not encoded at all.
+        val wanted = batch.filter { WsTopics.topicOf(it) in topics }
+        if (wanted.isEmpty()) return
+        for (event in WsBatch.coalesce(wanted)) {
+            val change = WsTopics.change(event, encoded) ?: continue
+            socket.send(Frame.Text(true, change.eventBytes(sequence++, withPrevious)))
+        }
+        flush()
+    }
+
+    private suspend fun send(message: WsServerMessage) = sendFrame(
+        Frame.Text(true, utf8(json.encodeToString(WsServerMessage.serializer(), message))),
     )
 
-    private suspend fun sendText(text: String) {
-        socket.send(Frame.Text(text))
+    private suspend fun sendFrame(frame: Frame) {
+        socket.send(frame)
+        flush()
+    }
+
+    private suspend fun flush() {
         // Sending only queues the frame, without limit; waiting for it to be written is what lets a client that
         // reads slowly hold this session up, so that its event buffer fills and it is told it missed events.
         socket.flush()
@@ -128,3 +161,9 @@ class WsSession(
 }
 
 private val KNOWN_TOPICS = WsTopic.entries.map { it.wireName }
+
+/** At most this many waiting events go out together (merged where they can be, with one flush). */
+private const val BATCH = 256
+
+/** How long a lone event waits for others to go out with. */
+private const val LINGER_MILLIS = 5L

@@ -56,7 +56,7 @@ internal object WsTopics {
     }
 
     /**
-     * The topic and the previous/current state of [event] as JSON text, or `null` for events no topic carries.
+     * The topic and the previous/current state of [event] as UTF-8 JSON, or `null` for events no topic carries.
      * [encoded] keeps the last encoded states of vehicles and orders, which are the next events' previous states.
      */
     fun change(event: KernelEvent, encoded: EncodedObjects = EncodedObjects()): Change? = when (event) {
@@ -64,64 +64,89 @@ internal object WsTopics {
 
         is TransportOrderEvent -> Change.of(WsTopic.TRANSPORT_ORDERS, event, encoded.orders::of)
 
-        is OrderSequenceEvent -> Change.of(WsTopic.ORDER_SEQUENCES, event) { json.encodeToString(it.toSseDto()) }
+        is OrderSequenceEvent -> Change.of(WsTopic.ORDER_SEQUENCES, event) { utf8(json.encodeToString(it.toSseDto())) }
 
-        is PathEvent -> Change.of(WsTopic.PLANT_MODEL, event) { json.encodeToString(it.toDto()) }
+        is PathEvent -> Change.of(WsTopic.PLANT_MODEL, event) { utf8(json.encodeToString(it.toDto())) }
 
-        is LocationEvent -> Change.of(WsTopic.PLANT_MODEL, event) { json.encodeToString(it.toDto()) }
+        is LocationEvent -> Change.of(WsTopic.PLANT_MODEL, event) { utf8(json.encodeToString(it.toDto())) }
 
         is UserNotificationEvent -> Change(
             WsTopic.NOTIFICATIONS,
             null,
-            json.encodeToString(event.notification.toDto()),
+            utf8(json.encodeToString(event.notification.toDto())),
         )
 
-        is DriverEvent -> Change(WsTopic.DRIVER_EVENTS, null, json.encodeToString(event.toDto()))
+        is DriverEvent -> Change(WsTopic.DRIVER_EVENTS, null, utf8(json.encodeToString(event.toDto())))
 
         else -> null
     }
 }
 
+/** [text] as UTF-8 (`String.getBytes`, whose Latin-1 fast path Ktor's `Frame.Text(String)` does not take). */
+internal fun utf8(text: String): ByteArray = text.toByteArray(Charsets.UTF_8)
+
 /**
  * The objects' states as last encoded, by identity, for the [capacity] most recently changed objects: a driving
  * vehicle or an order under way changes many times a second, and the state an event reports as previous is the one
- * the event before reported as current, so each state is encoded once instead of twice.
+ * the event before reported as current, so each state is encoded once instead of twice. One instance serves every
+ * WebSocket session (each state is encoded once, whoever follows it), so it is safe to use from several threads.
  */
 internal class LastEncoded<T : Any>(
     private val capacity: Int,
     private val nameOf: (T) -> String,
-    private val encode: (T) -> String,
+    private val encode: (T) -> ByteArray,
 ) {
-    private val last = object : LinkedHashMap<String, Pair<T, String>>(16, 0.75f, true) {
-        override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, Pair<T, String>>) = size > capacity
+    private val last = object : LinkedHashMap<String, Pair<T, ByteArray>>(16, 0.75f, true) {
+        override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, Pair<T, ByteArray>>) = size > capacity
     }
 
-    fun of(value: T): String {
+    fun of(value: T): ByteArray {
         val name = nameOf(value)
-        last[name]?.takeIf { it.first === value }?.let { return it.second }
-        return encode(value).also { last[name] = value to it }
+        synchronized(last) { last[name]?.takeIf { it.first === value }?.let { return it.second } }
+        // Encoded outside the lock: two sessions may encode the same state at once, which costs only time.
+        val encoded = encode(value)
+        synchronized(last) { last[name] = value to encoded }
+        return encoded
     }
 }
 
-/** A WebSocket session's [LastEncoded] vehicles and transport orders. */
+/** The [LastEncoded] vehicles and transport orders that every WebSocket session of a server shares. */
 internal class EncodedObjects(capacity: Int = DEFAULT_CAPACITY) {
-    val vehicles = LastEncoded<Vehicle>(capacity, { it.name }) { V1Json.json.encodeToString(it.toSseDto()) }
-    val orders = LastEncoded<TransportOrder>(capacity, { it.name }) { V1Json.json.encodeToString(it.toSseDto()) }
+    val vehicles = LastEncoded<Vehicle>(capacity, { it.name }) { utf8(V1Json.json.encodeToString(it.toSseDto())) }
+    val orders = LastEncoded<TransportOrder>(capacity, { it.name }, EncodedOrders::utf8)
 
     private companion object {
         const val DEFAULT_CAPACITY = 512
     }
 }
 
-/** One change of a topic's object, its states as the JSON text that goes on the wire. */
-internal data class Change(val topic: WsTopic, val previous: String?, val current: String?) {
-    /** The [WsEvent] message numbered [seq] as JSON text, put together from the states' texts. */
-    fun eventText(seq: Long): String =
-        """{"type":"event","topic":"${topic.wireName}","seq":$seq,"previous":${previous ?: "null"},""" +
-            """"current":${current ?: "null"},"v":$WS_PROTOCOL_VERSION}"""
+/** One change of a topic's object, its states as the UTF-8 JSON that goes on the wire. */
+internal class Change(val topic: WsTopic, val previous: ByteArray?, val current: ByteArray?) {
+    /**
+     * The [WsEvent] message numbered [seq] as UTF-8 JSON, put together from the states' bytes: copying them is all a
+     * session does per event, however many sessions follow it. Without [withPrevious], `previous` is `null` unless the
+     * object was removed.
+     */
+    fun eventBytes(seq: Long, withPrevious: Boolean = true): ByteArray {
+        val head = utf8("""{"type":"event","topic":"${topic.wireName}","seq":$seq,"previous":""")
+        // A client that asked for no previous states still needs a removed object's, to know which one went.
+        val previous = previous?.takeIf { withPrevious || current == null } ?: NULL
+        val current = current ?: NULL
+        val out = ByteArray(head.size + previous.size + CURRENT.size + current.size + TAIL.size)
+        var at = 0
+        for (part in arrayOf(head, previous, CURRENT, current, TAIL)) {
+            part.copyInto(out, at)
+            at += part.size
+        }
+        return out
+    }
 
     companion object {
-        fun <T : Any> of(topic: WsTopic, event: ObjectEvent<T>, encode: (T) -> String) =
+        private val NULL = utf8("null")
+        private val CURRENT = utf8(""","current":""")
+        private val TAIL = utf8(""","v":$WS_PROTOCOL_VERSION}""")
+
+        fun <T : Any> of(topic: WsTopic, event: ObjectEvent<T>, encode: (T) -> ByteArray) =
             Change(topic, event.previous?.let(encode), event.current?.let(encode))
     }
 }

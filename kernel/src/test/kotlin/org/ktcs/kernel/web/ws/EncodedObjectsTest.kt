@@ -7,6 +7,9 @@ import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.types.shouldBeSameInstanceAs
 import kotlinx.serialization.encodeToString
 import kotlinx.serialization.json.Json
+import kotlinx.serialization.json.JsonNull
+import kotlinx.serialization.json.jsonObject
+import kotlinx.serialization.json.jsonPrimitive
 import org.ktcs.api.event.VehicleEvent
 import org.ktcs.api.model.Vehicle
 import org.ktcs.kernel.web.v1.V1Json
@@ -22,8 +25,8 @@ class EncodedObjectsTest : FunSpec({
         val second = WsTopics.change(VehicleEvent(parked, moved), encoded)!!
 
         second.previous shouldBeSameInstanceAs first.current
-        second.current shouldBe V1Json.json.encodeToString(moved.toSseDto())
-        second.current shouldNotBe second.previous
+        second.current!!.decodeToString() shouldBe V1Json.json.encodeToString(moved.toSseDto())
+        second.current!!.decodeToString() shouldNotBe second.previous!!.decodeToString()
     }
 
     test("an event put together from the states' texts is the message the serializer writes") {
@@ -34,20 +37,20 @@ class EncodedObjectsTest : FunSpec({
             WsEvent(
                 "vehicles",
                 7,
-                Json.parseToJsonElement(change.previous!!),
-                Json.parseToJsonElement(change.current!!),
+                Json.parseToJsonElement(change.previous!!.decodeToString()),
+                Json.parseToJsonElement(change.current!!.decodeToString()),
             ),
         )
 
-        Json.parseToJsonElement(change.eventText(7)) shouldBe Json.parseToJsonElement(serialized)
-        WsTopics.change(VehicleEvent(null, parked))!!.eventText(8) shouldContain "\"previous\":null,"
+        Json.parseToJsonElement(change.eventBytes(7).decodeToString()) shouldBe Json.parseToJsonElement(serialized)
+        WsTopics.change(VehicleEvent(null, parked))!!.eventBytes(8).decodeToString() shouldContain "\"previous\":null,"
     }
 
     test("only the most recently changed objects are kept") {
         var encodings = 0
         val last = LastEncoded<Vehicle>(2, { it.name }) {
             encodings++
-            V1Json.json.encodeToString(it.toSseDto())
+            utf8(V1Json.json.encodeToString(it.toSseDto()))
         }
         val vehicles = (1..3).map { Vehicle("Vehicle-0$it") }
         vehicles.forEach { last.of(it) }
@@ -56,5 +59,23 @@ class EncodedObjectsTest : FunSpec({
         last.of(vehicles[0])
 
         encodings shouldBe 4
+    }
+
+    test("a client that wants no previous states gets a removed object's all the same") {
+        val parked = Vehicle("Vehicle-01", currentPosition = "Point-0001")
+        val moved = WsTopics.change(VehicleEvent(parked, parked.copy(currentPosition = "Point-0002")))!!
+        val removed = WsTopics.change(VehicleEvent(parked, null))!!
+
+        fun previousOf(change: Change) =
+            Json.parseToJsonElement(change.eventBytes(1, withPrevious = false).decodeToString()).jsonObject["previous"]
+        previousOf(moved) shouldBe JsonNull
+        previousOf(removed)!!.jsonObject["name"]!!.jsonPrimitive.content shouldBe "Vehicle-01"
+    }
+
+    test("text beyond Latin-1 goes on the wire as UTF-8") {
+        val vehicle = Vehicle("Fahrzeug-Ä→1")
+        val change = WsTopics.change(VehicleEvent(null, vehicle))!!
+
+        change.eventBytes(1).decodeToString() shouldContain "\"name\":\"Fahrzeug-Ä→1\""
     }
 })

@@ -3,13 +3,13 @@ package org.ktcs.kernel.web.v1.events
 import kotlinx.serialization.EncodeDefault
 import kotlinx.serialization.ExperimentalSerializationApi
 import kotlinx.serialization.Serializable
+import kotlinx.serialization.json.JsonElement
 import org.ktcs.api.order.DriveOrder
 import org.ktcs.api.order.TransportOrder
 import org.ktcs.kernel.orders.waitingReason
 import org.ktcs.kernel.web.v1.ObjectHistoryDto
 import org.ktcs.kernel.web.v1.orders.RouteDto
 import org.ktcs.kernel.web.v1.orders.orMaxInstant
-import org.ktcs.kernel.web.v1.orders.toDto
 import org.ktcs.kernel.web.v1.toDto
 import org.ktcs.kernel.web.v1.toWire
 
@@ -44,7 +44,8 @@ data class SseDriveOrderDto(
     val name: String,
     val destination: SseDestinationDto,
     val transportOrder: String,
-    val route: RouteDto?,
+    /** The JSON of [RouteDto] or `null`, encoded once per route (see [EncodedRoutes]). */
+    val route: JsonElement,
     val state: String,
 )
 
@@ -76,6 +77,6 @@ private fun DriveOrder.toSseDto(order: String) = SseDriveOrderDto(
     name = name,
     destination = SseDestinationDto(destination.target, destination.operation, destination.properties),
     transportOrder = order,
-    route = route?.toDto(),
+    route = EncodedRoutes.of("$order/$name", route),
     state = state.name,
 )

@@ -1,0 +1,46 @@
+package org.ktcs.kernel.web.v1.events
+
+import kotlinx.serialization.ExperimentalSerializationApi
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonNull
+import kotlinx.serialization.json.JsonUnquotedLiteral
+import org.ktcs.api.order.Route
+import org.ktcs.kernel.web.v1.V1Json
+import org.ktcs.kernel.web.v1.orders.RouteDto
+import org.ktcs.kernel.web.v1.orders.toDto
+
+/**
+ * The routes of the drive orders changed last, as JSON, by identity. An order under way changes at every step its
+ * vehicle drives, while its route stays the same object: encoded once, a route is then copied into each event as it
+ * is, so an event costs in proportion to what changed rather than to the route's length. Safe to use from several
+ * threads (every event stream shares it).
+ */
+internal object EncodedRoutes {
+    private const val CAPACITY = 512
+
+    private val last = object : LinkedHashMap<String, Pair<Route, EncodedRoute>>(16, 0.75f, true) {
+        override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, Pair<Route, EncodedRoute>>) =
+            size > CAPACITY
+    }
+
+    /** [route], the route of [driveOrder] (named by its transport order and its own name), as [RouteDto] JSON. */
+    fun of(driveOrder: String, route: Route?): JsonElement = route?.let { encoded(driveOrder, it).json } ?: JsonNull
+
+    /** The same as UTF-8, `null` for no route (see [of]). */
+    fun utf8Of(driveOrder: String, route: Route?): ByteArray? = route?.let { encoded(driveOrder, it).utf8 }
+
+    private fun encoded(driveOrder: String, route: Route): EncodedRoute {
+        synchronized(last) { last[driveOrder]?.takeIf { it.first === route }?.let { return it.second } }
+        val encoded = EncodedRoute(V1Json.json.encodeToString(RouteDto.serializer(), route.toDto()))
+        synchronized(last) { last[driveOrder] = route to encoded }
+        return encoded
+    }
+
+    /** One route's JSON, as a literal to put in a tree and as UTF-8 (made when first asked for). */
+    private class EncodedRoute(text: String) {
+        @OptIn(ExperimentalSerializationApi::class)
+        val json: JsonElement = JsonUnquotedLiteral(text)
+
+        val utf8: ByteArray by lazy { text.toByteArray(Charsets.UTF_8) }
+    }
+}

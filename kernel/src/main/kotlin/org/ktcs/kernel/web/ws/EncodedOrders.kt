@@ -1,0 +1,58 @@
+package org.ktcs.kernel.web.ws
+
+import kotlinx.serialization.ExperimentalSerializationApi
+import kotlinx.serialization.json.JsonUnquotedLiteral
+import org.ktcs.api.order.TransportOrder
+import org.ktcs.kernel.web.v1.V1Json
+import org.ktcs.kernel.web.v1.events.EncodedRoutes
+import org.ktcs.kernel.web.v1.events.SseTransportOrderDto
+import org.ktcs.kernel.web.v1.events.toSseDto
+
+/**
+ * A transport order's event state as UTF-8 JSON, its routes spliced in as bytes: the order is encoded with a mark
+ * where each route goes, and the routes' bytes, encoded once per route ([EncodedRoutes]), are copied in. The routes
+ * are most of an order's JSON and stay the same while the order advances step by step, so they are neither encoded
+ * nor copied character by character again at every step.
+ */
+internal object EncodedOrders {
+    // A raw control character cannot occur in JSON that kotlinx writes (it escapes them in strings): a safe mark.
+    private const val MARK: Byte = 1
+
+    @OptIn(ExperimentalSerializationApi::class)
+    private val markLiteral = JsonUnquotedLiteral("\u0001")
+
+    fun utf8(order: TransportOrder): ByteArray {
+        val routes = order.driveOrders.map { EncodedRoutes.utf8Of("${order.name}/${it.name}", it.route) }
+        val dto = order.toSseDto()
+        val marked = dto.copy(
+            driveOrders = dto.driveOrders.mapIndexed { index, driveOrder ->
+                if (routes[index] == null) driveOrder else driveOrder.copy(route = markLiteral)
+            },
+        )
+        val text = utf8(V1Json.json.encodeToString(SseTransportOrderDto.serializer(), marked))
+        return splice(text, routes.filterNotNull())
+    }
+
+    /** [text] with each [MARK] replaced by the next of [routes]. */
+    private fun splice(text: ByteArray, routes: List<ByteArray>): ByteArray {
+        if (routes.isEmpty()) return text
+        val out = ByteArray(text.size - routes.size + routes.sumOf { it.size })
+        var from = 0
+        var to = 0
+        for (route in routes) {
+            val mark = indexOf(text, from)
+            text.copyInto(out, to, from, mark)
+            to += mark - from
+            route.copyInto(out, to)
+            to += route.size
+            from = mark + 1
+        }
+        text.copyInto(out, to, from, text.size)
+        return out
+    }
+
+    private fun indexOf(text: ByteArray, from: Int): Int {
+        for (i in from until text.size) if (text[i] == MARK) return i
+        error("a route's mark is missing from the order's JSON")
+    }
+}
