@@ -67,6 +67,11 @@ class SimulationRunner(
         SimulationKernel(model, config, extensions.map { it.module() } + overrides, clock).use { kernel ->
             val audit = AllocationAudit()
             val latencies = AssignLatencies(kernel)
+            val ledger = VehicleTimeLedger(
+                kernel.clock::elapsedMillis,
+                timeFactor,
+                kernel.core.orders::get,
+            ) { it.startsWith(ORDER_PREFIX) }
             var final = 0
             var lastProgress = 0L
             val creations = (0 until orders).map(::randomOrder)
@@ -74,6 +79,7 @@ class SimulationRunner(
             val kernelThread = kernel.onKernel {
                 kernel.core.events.listen(audit::onEvent)
                 kernel.core.events.listen(latencies::onEvent)
+                kernel.core.events.listen(ledger::onEvent)
                 kernel.core.events.listen { event ->
                     if (event is TransportOrderEvent && event.isSimulationOrderEnding()) {
                         final++
@@ -87,6 +93,7 @@ class SimulationRunner(
             val startMillis = kernel.onKernel { kernel.clock.elapsedMillis() }
             kernel.onKernel {
                 lastProgress = kernel.clock.elapsedMillis()
+                ledger.start(kernel.core.plant.vehicles())
                 creations.forEach { kernel.core.createTransportOrder(it) }
             }
             val stallLimit = (STALL_LIMIT_MILLIS / timeFactor).toLong()
@@ -104,6 +111,7 @@ class SimulationRunner(
                     doubleAllocations = audit.doubleAllocations,
                     sharedPositions = audit.sharedPositions,
                     lowerBoundSeconds = lowerBound(creations),
+                    vehicleSeconds = ledger.totals().mapValues { it.value / 1000.0 },
                 )
             }
         }
