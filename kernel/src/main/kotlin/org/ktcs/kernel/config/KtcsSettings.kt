@@ -10,6 +10,7 @@ import org.ktcs.extension.config.intSetting
 import org.ktcs.extension.config.longSetting
 import org.ktcs.extension.config.stringSetting
 import org.ktcs.kernel.dispatching.CandidatePriority
+import org.ktcs.kernel.dispatching.DEFAULT_ORDER_CANDIDATE_WINDOW
 import org.ktcs.kernel.dispatching.OrderPriority
 import org.ktcs.kernel.dispatching.VehiclePriority
 import org.ktcs.kernel.routing.EdgeEvaluator
@@ -171,8 +172,16 @@ object KtcsSettings {
     )
     val dispatcherOrderCandidatePriorities = enumListSetting(
         "dispatcher.orderCandidatePriorities",
-        listOf(CandidatePriority.BY_DEADLINE),
-        "How a vehicle picks among orders: the same keys as dispatcher.vehicleCandidatePriorities.",
+        listOf(CandidatePriority.BY_DEADLINE, CandidatePriority.BY_INITIAL_ROUTING_COSTS),
+        "How a vehicle picks among orders: the same keys as dispatcher.vehicleCandidatePriorities (openTCS default: " +
+            "BY_DEADLINE; the nearest order within dispatcher.orderCandidateWindow halves the empty trips).",
+    )
+    val dispatcherOrderCandidateWindow = intSetting(
+        "dispatcher.orderCandidateWindow",
+        DEFAULT_ORDER_CANDIDATE_WINDOW,
+        0..100_000,
+        "How many orders a vehicle picks among: the most urgent by dispatcher.orderPriorities it may take (0: all). " +
+            "An order passed over this many times is taken next by a vehicle that can.",
     )
     val dispatcherParkIdleVehicles =
         booleanSetting(
@@ -238,6 +247,7 @@ object KtcsSettings {
         dispatcherVehiclePriorities,
         dispatcherVehicleCandidatePriorities,
         dispatcherOrderCandidatePriorities,
+        dispatcherOrderCandidateWindow,
         dispatcherParkIdleVehicles,
         dispatcherRechargeIdleVehicles,
         dispatcherKeepRecharging,
