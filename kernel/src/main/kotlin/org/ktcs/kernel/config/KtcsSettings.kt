@@ -173,8 +173,10 @@ object KtcsSettings {
     val dispatcherOrderCandidatePriorities = enumListSetting(
         "dispatcher.orderCandidatePriorities",
         listOf(CandidatePriority.BY_DEADLINE, CandidatePriority.BY_INITIAL_ROUTING_COSTS),
-        "How a vehicle picks among orders: the same keys as dispatcher.vehicleCandidatePriorities (openTCS default: " +
-            "BY_DEADLINE; the nearest order within dispatcher.orderCandidateWindow halves the empty trips).",
+        "How a vehicle picks among orders: the same keys as dispatcher.vehicleCandidatePriorities. openTCS's " +
+            "default is BY_DEADLINE alone (the oldest order, however far); the nearest within " +
+            "dispatcher.orderCandidateWindow halves the fleet's empty driving (issue #11's grids: 36% of vehicle " +
+            "time to 19%, makespan 2.25-2.54x the lower bound to 1.81-2.20x).",
     )
     val dispatcherOrderCandidateWindow = intSetting(
         "dispatcher.orderCandidateWindow",

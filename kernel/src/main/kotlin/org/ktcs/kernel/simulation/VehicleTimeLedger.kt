@@ -90,8 +90,10 @@ class VehicleTimeLedger(
         if (inBatch(current.name)) {
             val wasWaiting = waiting.isNotEmpty()
             if (current.state == TransportOrderState.DISPATCHABLE) waiting += current.name else waiting -= current.name
-            if (wasWaiting != waiting.isNotEmpty()) vehicles.values.filter { it.transportOrder == null }.forEach {
-                reclassify(it.name)
+            if (wasWaiting != waiting.isNotEmpty()) {
+                vehicles.values.filter { it.transportOrder == null }.forEach {
+                    reclassify(it.name)
+                }
             }
         }
         current.processingVehicle?.let(::reclassify)

@@ -11,7 +11,10 @@ class DispatcherConfigurationTest : FunSpec({
             orderPriorities = listOf(OrderPriority.BY_DEADLINE),
             vehiclePriorities = listOf(VehiclePriority.IDLE_FIRST, VehiclePriority.BY_ENERGY_LEVEL),
             vehicleCandidatePriorities = listOf(CandidatePriority.IDLE_FIRST, CandidatePriority.BY_ENERGY_LEVEL),
-            orderCandidatePriorities = listOf(CandidatePriority.BY_DEADLINE, CandidatePriority.BY_INITIAL_ROUTING_COSTS),
+            orderCandidatePriorities = listOf(
+                CandidatePriority.BY_DEADLINE,
+                CandidatePriority.BY_INITIAL_ROUTING_COSTS,
+            ),
             orderCandidateWindow = 10,
             deadlineAtRiskPeriodMillis = 60_000,
             assignRedundantOrders = false,
