@@ -20,7 +20,8 @@ package org.ktcs.kernel.dispatching
  * @property orderCandidateWindow how many orders a vehicle chooses among (kTCS, not in openTCS): the ones ranked most
  *   urgent by [orderPriorities] among those it may take; 0 means all. It is also the fairness bound: an order that
  *   vehicles passed over this many times (they took a less urgent one) is taken before any other by the next vehicle
- *   that can take it, so no order waits for ever while nearer ones keep coming.
+ *   that has it in its window and can take it, so no order waits for ever while nearer ones keep coming (only more
+ *   urgent orders, e.g. with earlier deadlines, can push it out of the windows).
  * @property deadlineAtRiskPeriodMillis how long before its deadline an order counts as at risk for
  *   `DEADLINE_AT_RISK_FIRST` (`defaultdispatcher.deadlineAtRiskPeriod`).
  * @property assignRedundantOrders whether an order whose only destination is the vehicle's current point, with
