@@ -3,6 +3,7 @@ package org.ktcs.kernel.dispatching
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.shouldBe
+import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.order.TransportOrderState
 
 /**
@@ -11,34 +12,25 @@ import org.ktcs.api.order.TransportOrderState
  * passed over more often than the window is large.
  */
 class NearestOrderTest : FunSpec({
-    test("a vehicle that becomes free takes the nearest order, not the oldest") {
+    /** What V1, standing at G next to S2, takes: [other] (at S1, farther away) or an order at S2 created at T0. */
+    fun choiceBetween(other: TransportOrder, configuration: DispatcherConfiguration = assignOnly): String? {
         val context = FakeDispatchContext(plant())
-        context.add(vehicle("V1", at = "G"))
-        context.add(order("Old", load("S1"), created = T0.minusSeconds(60)), order("Near", load("S2")))
+        context.add(vehicle("V1", at = "G"), other, order("Near", load("S2")))
+        context.dispatch(configuration)
+        return context.assignedOrder("V1")
+    }
 
-        context.dispatch()
-
-        context.assignedOrder("V1") shouldBe "Near"
+    test("a vehicle that becomes free takes the nearest order, not the oldest") {
+        choiceBetween(order("Old", load("S1"), created = T0.minusSeconds(60))) shouldBe "Near"
     }
 
     test("an earlier deadline still comes before distance") {
-        val context = FakeDispatchContext(plant())
-        context.add(vehicle("V1", at = "G"))
-        context.add(order("Urgent", load("S1"), deadline = T0.plusSeconds(60)), order("Near", load("S2")))
-
-        context.dispatch()
-
-        context.assignedOrder("V1") shouldBe "Urgent"
+        choiceBetween(order("Urgent", load("S1"), deadline = T0.plusSeconds(60))) shouldBe "Urgent"
     }
 
     test("the vehicle chooses only among the window of longest-waiting orders") {
-        val context = FakeDispatchContext(plant())
-        context.add(vehicle("V1", at = "G"))
-        context.add(order("Oldest", load("S1"), created = T0.minusSeconds(60)), order("Near", load("S2")))
-
-        context.dispatch(assignOnly.copy(orderCandidateWindow = 1))
-
-        context.assignedOrder("V1") shouldBe "Oldest"
+        val oldest = order("Oldest", load("S1"), created = T0.minusSeconds(60))
+        choiceBetween(oldest, assignOnly.copy(orderCandidateWindow = 1)) shouldBe "Oldest"
     }
 
     test("with window 0 the vehicle chooses among all orders, as openTCS does") {
