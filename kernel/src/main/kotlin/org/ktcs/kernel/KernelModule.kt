@@ -103,6 +103,7 @@ fun dispatcherConfiguration(config: KtcsConfig) = DispatcherConfiguration(
     vehiclePriorities = config[KtcsSettings.dispatcherVehiclePriorities].values,
     vehicleCandidatePriorities = config[KtcsSettings.dispatcherVehicleCandidatePriorities].values,
     orderCandidatePriorities = config[KtcsSettings.dispatcherOrderCandidatePriorities].values,
+    orderCandidateWindow = config[KtcsSettings.dispatcherOrderCandidateWindow],
     parkIdleVehicles = config[KtcsSettings.dispatcherParkIdleVehicles],
     rechargeIdleVehicles = config[KtcsSettings.dispatcherRechargeIdleVehicles],
     keepRechargingUntilFullyCharged = config[KtcsSettings.dispatcherKeepRecharging],

@@ -10,6 +10,7 @@ import org.ktcs.extension.config.intSetting
 import org.ktcs.extension.config.longSetting
 import org.ktcs.extension.config.stringSetting
 import org.ktcs.kernel.dispatching.CandidatePriority
+import org.ktcs.kernel.dispatching.DEFAULT_ORDER_CANDIDATE_WINDOW
 import org.ktcs.kernel.dispatching.OrderPriority
 import org.ktcs.kernel.dispatching.VehiclePriority
 import org.ktcs.kernel.routing.EdgeEvaluator
@@ -176,8 +177,18 @@ object KtcsSettings {
     )
     val dispatcherOrderCandidatePriorities = enumListSetting(
         "dispatcher.orderCandidatePriorities",
-        listOf(CandidatePriority.BY_DEADLINE),
-        "How a vehicle picks among orders: the same keys as dispatcher.vehicleCandidatePriorities.",
+        listOf(CandidatePriority.BY_DEADLINE, CandidatePriority.BY_INITIAL_ROUTING_COSTS),
+        "How a vehicle picks among orders: the same keys as dispatcher.vehicleCandidatePriorities. openTCS's " +
+            "default is BY_DEADLINE alone (the oldest order, however far); the nearest within " +
+            "dispatcher.orderCandidateWindow halves the fleet's empty driving (issue #11's grids: 36% of vehicle " +
+            "time to 19%, makespan 2.25-2.54x the lower bound to 1.81-2.20x).",
+    )
+    val dispatcherOrderCandidateWindow = intSetting(
+        "dispatcher.orderCandidateWindow",
+        DEFAULT_ORDER_CANDIDATE_WINDOW,
+        0..100_000,
+        "How many orders a vehicle picks among: the most urgent by dispatcher.orderPriorities it may take (0: all). " +
+            "An order passed over this many times is taken next by a vehicle that can.",
     )
     val dispatcherParkIdleVehicles =
         booleanSetting(
@@ -244,6 +255,7 @@ object KtcsSettings {
         dispatcherVehiclePriorities,
         dispatcherVehicleCandidatePriorities,
         dispatcherOrderCandidatePriorities,
+        dispatcherOrderCandidateWindow,
         dispatcherParkIdleVehicles,
         dispatcherRechargeIdleVehicles,
         dispatcherKeepRecharging,

@@ -7,8 +7,9 @@ import org.ktcs.api.dispatching.RecoveryEvaluator
 /**
  * openTCS's default dispatching strategy, in one pass per [dispatch]:
  * 1. vehicles bound to an order sequence get its next dispatchable order;
- * 2. free orders go to available vehicles (see [DispatcherConfiguration] for the rankings), a vehicle busy with a
- *    dispensable order taking a non-dispensable one in preference to staying on it;
+ * 2. free orders go to available vehicles (see [DispatcherConfiguration] for the rankings and the window of orders a
+ *    vehicle chooses among), a vehicle busy with a dispensable order taking a non-dispensable one in preference to
+ *    staying on it;
  * 3. idle vehicles with degraded energy get a recharge order, assigned at once;
  * 4. idle vehicles that are not parked get a park order, assigned at once (and parked ones a better park point, if
  *    configured).
@@ -27,6 +28,7 @@ class DefaultDispatcher(
     private val recovery: RecoveryEvaluator,
 ) : IncrementalDispatcher {
     private val deferrals = DeferralLog(context)
+    private val passOvers = PassOvers(configuration.orderCandidateWindow)
     private var settled: WaitingReasons.Given? = null
 
     /** How many runs on changes did not have to be full ones (for tests). */
@@ -42,7 +44,7 @@ class DefaultDispatcher(
         val availability = VehicleAvailability.of(run)
         val checks = CandidateChecks(run, availability)
         SequenceSuccessors(run, availability, checks, deferrals).assign()
-        val freeOrders = FreeOrderAssignment(run, availability, checks, deferrals)
+        val freeOrders = FreeOrderAssignment(run, availability, checks, deferrals, passOvers)
         val previous = settled
         settled = null
         if (newOrders != null && previous != null && freeOrders.assignNew(newOrders, previous)) {
@@ -54,11 +56,9 @@ class DefaultDispatcher(
         // Only a run that read the orders knows which are still waiting; the others leave the log as it is.
         // Runs on changes leave that to the full ones (at the latest the periodic run).
         if (run.ordersRead && newOrders == null) {
-            deferrals.retainOnly(
-                run.dispatchableOrders.mapTo(HashSet()) {
-                    it.name
-                },
-            )
+            val waiting = run.dispatchableOrders.mapTo(HashSet()) { it.name }
+            deferrals.retainOnly(waiting)
+            passOvers.retainOnly(waiting)
         }
         settled = freeOrders.settled()
     }

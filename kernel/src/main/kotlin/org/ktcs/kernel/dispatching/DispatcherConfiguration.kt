@@ -14,7 +14,14 @@ package org.ktcs.kernel.dispatching
  * @property vehicleCandidatePriorities how an order chooses among the vehicles that could do it
  *   (`defaultdispatcher.vehicleCandidatePriorities`).
  * @property orderCandidatePriorities how a vehicle chooses among the orders it could do
- *   (`defaultdispatcher.orderCandidatePriorities`).
+ *   (`defaultdispatcher.orderCandidatePriorities`). kTCS's default adds `BY_INITIAL_ROUTING_COSTS` after openTCS's
+ *   `BY_DEADLINE`: a vehicle that becomes free takes the nearest of the orders in its [orderCandidateWindow] instead
+ *   of driving empty across the plant to the oldest one.
+ * @property orderCandidateWindow how many orders a vehicle chooses among (kTCS, not in openTCS): the ones ranked most
+ *   urgent by [orderPriorities] among those it may take; 0 means all. It is also the fairness bound: an order that
+ *   vehicles passed over this many times (they took a less urgent one) is taken before any other by the next vehicle
+ *   that has it in its window and can take it, so no order waits for ever while nearer ones keep coming (only more
+ *   urgent orders, e.g. with earlier deadlines, can push it out of the windows).
  * @property deadlineAtRiskPeriodMillis how long before its deadline an order counts as at risk for
  *   `DEADLINE_AT_RISK_FIRST` (`defaultdispatcher.deadlineAtRiskPeriod`).
  * @property assignRedundantOrders whether an order whose only destination is the vehicle's current point, with
@@ -42,7 +49,9 @@ data class DispatcherConfiguration(
     val vehiclePriorities: List<VehiclePriority> = listOf(VehiclePriority.IDLE_FIRST, VehiclePriority.BY_ENERGY_LEVEL),
     val vehicleCandidatePriorities: List<CandidatePriority> =
         listOf(CandidatePriority.IDLE_FIRST, CandidatePriority.BY_ENERGY_LEVEL),
-    val orderCandidatePriorities: List<CandidatePriority> = listOf(CandidatePriority.BY_DEADLINE),
+    val orderCandidatePriorities: List<CandidatePriority> =
+        listOf(CandidatePriority.BY_DEADLINE, CandidatePriority.BY_INITIAL_ROUTING_COSTS),
+    val orderCandidateWindow: Int = DEFAULT_ORDER_CANDIDATE_WINDOW,
     val deadlineAtRiskPeriodMillis: Long = 60_000,
     val assignRedundantOrders: Boolean = false,
     val parkIdleVehicles: Boolean = true,
@@ -54,6 +63,7 @@ data class DispatcherConfiguration(
     val keepRechargingUntilFullyCharged: Boolean = true,
 ) {
     init {
+        require(orderCandidateWindow >= 0) { "orderCandidateWindow must not be negative, was $orderCandidateWindow" }
         require(deadlineAtRiskPeriodMillis >= 0) {
             "deadlineAtRiskPeriodMillis must not be negative, was $deadlineAtRiskPeriodMillis"
         }
@@ -65,6 +75,9 @@ data class DispatcherConfiguration(
         }
     }
 }
+
+/** The default [DispatcherConfiguration.orderCandidateWindow]. */
+const val DEFAULT_ORDER_CANDIDATE_WINDOW: Int = 10
 
 /** Keys for ranking transport orders against each other. */
 enum class OrderPriority {

@@ -18,6 +18,7 @@ internal class FreeOrderAssignment(
     private val availability: VehicleAvailability,
     private val checks: CandidateChecks,
     private val deferrals: DeferralLog,
+    private val passOvers: PassOvers,
 ) {
     private val eligibility = OrderEligibility(run)
     private val refusals = HashMap<String, MutableList<Refusal>>()
@@ -101,11 +102,33 @@ internal class FreeOrderAssignment(
         !run.isAssigned(it) && it.isFor(vehicle) && eligibility.isFree(it) && eligibility.lockedTarget(it) == null
     }
 
+    /**
+     * Each vehicle in turn takes its best order among its window (the most urgent orders it may take), a due one
+     * ([PassOvers]) first.
+     */
     private fun vehiclesChoose(vehicles: List<Vehicle>, orders: List<TransportOrder>) {
+        val size = run.configuration.orderCandidateWindow
+        val ranked = if (size > 0) orders.sortedWith(run.priorities.orders) else orders
         for (vehicle in vehicles.sortedWith(run.priorities.vehicles)) {
-            val candidates = orders.filter { !run.isAssigned(it) && it.isFor(vehicle) }.map { Candidate(vehicle, it) }
-            bestCandidate(candidates, run.priorities.orderCandidates, ::assess)?.let(::assign)
+            val open = ranked.asSequence().filter { !run.isAssigned(it) && it.isFor(vehicle) }
+            val window = (if (size > 0) open.take(size) else open).toList()
+            val chosen = bestOf(vehicle, window.filter(passOvers::isDue)) ?: bestOf(vehicle, window) ?: continue
+            assign(chosen)
+            if (size > 0) passOvers.chose(chosen.order, window)
         }
+    }
+
+    private fun bestOf(vehicle: Vehicle, orders: List<TransportOrder>): Candidate? =
+        bestCandidate(orders.map { Candidate(vehicle, it) }, run.priorities.orderCandidates, ::assess, ::costsToStart)
+
+    /**
+     * A lower bound of the costs of [candidate]'s routes: the cheapest route from the vehicle to any point of its
+     * first destination (one search per vehicle and run answers it for every order).
+     */
+    private fun costsToStart(candidate: Candidate): Long? {
+        val target = candidate.order.driveOrders.firstOrNull()?.destination?.target ?: return null
+        val points = run.model.location(target)?.links?.map { it.point } ?: listOf(target)
+        return points.mapNotNull { run.routes.costs(candidate.vehicle, it) }.minOrNull()
     }
 
     private fun ordersChoose(orders: List<TransportOrder>, vehicles: List<Vehicle>) {

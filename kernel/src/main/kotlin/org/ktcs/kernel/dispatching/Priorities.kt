@@ -51,6 +51,9 @@ internal class CandidateRanking(
 ) {
     val full: Comparator<Candidate> = compose((keys + tieBreakers).map { candidateComparator(it, atRisk) })
 
+    /** The first key that compares route costs, or `null`. */
+    val routeKey: CandidatePriority? = keys.firstOrNull { it.needsRoute }
+
     val beforeRouting: Comparator<Candidate> =
         if (keys.none { it.needsRoute }) {
             full

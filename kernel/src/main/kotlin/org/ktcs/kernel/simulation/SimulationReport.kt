@@ -17,11 +17,14 @@ data class SimulationReport(
     val grantsHeldBack: Long,
     val wallSeconds: Double = 0.0,
     val assignLatencyMillis: Percentiles = Percentiles(0.0, 0.0),
+    val firstWaveAssignments: Int = 0,
+    val firstWaveMillis: Long = 0,
     val routeMillis: Percentiles = Percentiles(0.0, 0.0),
     val routeComputations: Int = 0,
     val doubleAllocations: Int = 0,
     val sharedPositions: Int = 0,
     val lowerBoundSeconds: Double = 0.0,
+    val vehicleSeconds: Map<VehicleTimeUse, Double> = emptyMap(),
 ) {
     fun lines(): List<String> = listOf(
         "plant: $plant",
@@ -36,6 +39,7 @@ data class SimulationReport(
         "makespan_over_lower_bound: ${"%.2f".format(
             if (lowerBoundSeconds > 0) makespanSimulatedSeconds / lowerBoundSeconds else 0.0,
         )}",
+    ) + vehicleTimeLines() + listOf(
         "kernel_cpu_s: ${"%.2f".format(kernelCpuSeconds)}",
         "kernel_cpu_per_order_ms: ${"%.3f".format(
             if (ordersFinished == 0) 0.0 else kernelCpuSeconds * 1000 / ordersFinished,
@@ -43,6 +47,8 @@ data class SimulationReport(
         "wall_s: ${"%.2f".format(wallSeconds)}",
         "assign_latency_p50_ms: ${"%.3f".format(assignLatencyMillis.p50)}",
         "assign_latency_p99_ms: ${"%.3f".format(assignLatencyMillis.p99)}",
+        "first_wave_assignments: $firstWaveAssignments",
+        "first_wave_ms: $firstWaveMillis",
         "route_computations: $routeComputations",
         "route_p50_ms: ${"%.3f".format(routeMillis.p50)}",
         "route_p99_ms: ${"%.3f".format(routeMillis.p99)}",
@@ -53,6 +59,15 @@ data class SimulationReport(
         "double_allocations: $doubleAllocations",
         "shared_positions: $sharedPositions",
     )
+
+    /** Where the vehicles' time went, summed over vehicles, with each use's share of the fleet's time. */
+    private fun vehicleTimeLines(): List<String> {
+        val total = vehicleSeconds.values.sum()
+        return vehicleSeconds.map { (use, seconds) ->
+            val share = if (total > 0) seconds * 100 / total else 0.0
+            "vehicle_time_${use.label}_s: ${"%.1f".format(seconds)} (${"%.1f".format(share)}%)"
+        }
+    }
 }
 
 /** The median and the 99th percentile of some measurements. */

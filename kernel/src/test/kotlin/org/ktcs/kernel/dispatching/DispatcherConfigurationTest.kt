@@ -6,12 +6,16 @@ import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 
 class DispatcherConfigurationTest : FunSpec({
-    test("defaults are openTCS's, except that idle vehicles park and recharge") {
+    test("defaults are openTCS's, except that idle vehicles park and recharge and a vehicle takes the nearest order") {
         DispatcherConfiguration() shouldBe DispatcherConfiguration(
             orderPriorities = listOf(OrderPriority.BY_DEADLINE),
             vehiclePriorities = listOf(VehiclePriority.IDLE_FIRST, VehiclePriority.BY_ENERGY_LEVEL),
             vehicleCandidatePriorities = listOf(CandidatePriority.IDLE_FIRST, CandidatePriority.BY_ENERGY_LEVEL),
-            orderCandidatePriorities = listOf(CandidatePriority.BY_DEADLINE),
+            orderCandidatePriorities = listOf(
+                CandidatePriority.BY_DEADLINE,
+                CandidatePriority.BY_INITIAL_ROUTING_COSTS,
+            ),
+            orderCandidateWindow = 10,
             deadlineAtRiskPeriodMillis = 60_000,
             assignRedundantOrders = false,
             parkIdleVehicles = true,
@@ -29,6 +33,8 @@ class DispatcherConfigurationTest : FunSpec({
             .message shouldContain "-1"
         shouldThrow<IllegalArgumentException> { DispatcherConfiguration(parkIdleVehiclesDelayMillis = -5) }
         shouldThrow<IllegalArgumentException> { DispatcherConfiguration(rechargeIdleVehiclesDelayMillis = -5) }
+        shouldThrow<IllegalArgumentException> { DispatcherConfiguration(orderCandidateWindow = -1) }
+            .message shouldContain "-1"
     }
 
     test("only the routing-cost keys need routes") {

@@ -26,6 +26,12 @@ class IncrementalDispatchEquivalenceTest : FunSpec({
             vehiclePriorities = listOf(VehiclePriority.BY_ENERGY_LEVEL),
             orderCandidatePriorities = listOf(CandidatePriority.BY_COMPLETE_ROUTING_COSTS),
         ),
+        // Pass-over counts carry from run to run: a run on changes must count what a full run counts.
+        "nearest order within a window of 2" to assignOnly.copy(orderCandidateWindow = 2),
+        "openTCS's choice among all orders" to assignOnly.copy(
+            orderCandidatePriorities = listOf(CandidatePriority.BY_DEADLINE),
+            orderCandidateWindow = 0,
+        ),
     )
 
     /** Both kernels, fed the same events. */

@@ -108,7 +108,8 @@ class OrderEligibilityTest : FunSpec({
             order("R1", Destination("C1", "CHARGE"), created = T0.plusSeconds(1)),
         )
 
-        context.dispatch()
+        // openTCS's ranking, so that the vehicle is asked about the older order first.
+        context.dispatch(assignOnly.copy(orderCandidatePriorities = listOf(CandidatePriority.BY_DEADLINE)))
 
         context.assignedOrder("V1") shouldBe "R1"
         context.deferralsOf("T1") shouldContainExactly listOf("vehicle V1: energy level critical")

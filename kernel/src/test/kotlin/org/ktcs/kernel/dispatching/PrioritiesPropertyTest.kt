@@ -119,7 +119,7 @@ class PrioritiesPropertyTest : FunSpec({
         }
     }
 
-    test("the lazy search finds the same candidate as ranking all accepted ones") {
+    test("the lazy search finds the same candidate as ranking all accepted ones, with or without cost bounds") {
         checkAll(300, vehicles, orders, keys, costs, Arb.list(Arb.boolean(), 16..16)) {
                 vehicles,
                 orders,
@@ -133,9 +133,15 @@ class PrioritiesPropertyTest : FunSpec({
             val unrouted = routed.map { Candidate(it.vehicle, it.order) }.shuffled()
             val byPair = accepted.associateBy { it.vehicle.name to it.order.name }
 
-            val found = bestCandidate(unrouted, ranking) { byPair[it.vehicle.name to it.order.name] }
+            val found = bestCandidate(unrouted, ranking, { byPair[it.vehicle.name to it.order.name] })
+            // The costs of the route to the first destination bound both route-cost keys from below, tightly.
+            val costsByPair = routed.associate { (it.vehicle.name to it.order.name) to it.initialCosts }
+            val bounded = bestCandidate(unrouted, ranking, { byPair[it.vehicle.name to it.order.name] }) {
+                costsByPair[it.vehicle.name to it.order.name]
+            }
 
             found?.toString() shouldBe accepted.minWithOrNull(ranking.full)?.toString()
+            bounded?.toString() shouldBe found?.toString()
         }
     }
 })

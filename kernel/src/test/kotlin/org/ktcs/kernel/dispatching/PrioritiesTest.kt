@@ -112,7 +112,7 @@ class PrioritiesTest : FunSpec({
         }
 
         test("keys that need no route make the ranking before routing the full ranking") {
-            val ranking = priorities().orderCandidates
+            val ranking = priorities().vehicleCandidates
             ranking.beforeRouting shouldBe ranking.full
         }
     }
