@@ -76,7 +76,9 @@ internal object KotlinClasses {
         if (constructor.isSynthetic || !isKotlinClass(type)) return false
         val withDefaults = withDefaults(type)
         return if (withDefaults != null) {
-            withDefaults.parameterTypes.take(constructor.parameterCount) == constructor.parameterTypes.toList()
+            val count = constructor.parameterCount
+            withDefaults.parameterCount == count + (count + Int.SIZE_BITS - 1) / Int.SIZE_BITS + 1 &&
+                withDefaults.parameterTypes.take(count) == constructor.parameterTypes.toList()
         } else {
             type.declaredConstructors.count { !it.isSynthetic } == 1
         }
@@ -101,18 +103,13 @@ internal object KotlinClasses {
         ): Any? {
             val args = buffer.getParameters(props)
             val absent = props.indices.filter { !buffer.hasParameter(props[it]) }
+            absent.forEach { if (args[it] == null) args[it] = zeroOf(primary.parameterTypes[it]) }
+            // Jackson gives a left-out number 0 (and a left-out reference null, which Kotlin's null check reports).
+            absent.firstOrNull { primary.parameterTypes[it].isPrimitive && !hasDefault(it, args, absent) }
+                ?.let { throw missing(ctxt, props[it].name) }
             return try {
-                if (absent.isEmpty()) return primary.newInstance(*args)
-                absent.forEach { if (args[it] == null) args[it] = zeroOf(primary.parameterTypes[it]) }
-                // Jackson gives a left-out number 0 (and a left-out reference null, which Kotlin's null check reports).
-                val missingNumber = absent.firstOrNull {
-                    primary.parameterTypes[it].isPrimitive && (withDefaults == null || !hasDefault(it, args, absent))
-                }
-                if (missingNumber != null) throw missing(ctxt, props[missingNumber].name)
-                if (withDefaults == null) {
-                    primary.newInstance(
-                        *args,
-                    )
+                if (absent.isEmpty() || withDefaults == null) {
+                    primary.newInstance(*args)
                 } else {
                     withDefaults.newInstance(*arguments(args, absent))
                 }
@@ -130,13 +127,16 @@ internal object KotlinClasses {
         }
 
         // Kotlin ignores the argument of a parameter with a default when its mask bit is set: if two different
-        // arguments make equal objects, there is a default. Asked once per parameter.
-        private fun hasDefault(index: Int, args: Array<Any?>, absent: List<Int>): Boolean = hasDefault.getOrPut(index) {
+        // arguments make equal objects, there is a default. Asked once per parameter; a probe the other values make
+        // fail (the constructor refuses them) answers nothing and is not kept.
+        private fun hasDefault(index: Int, args: Array<Any?>, absent: List<Int>): Boolean {
+            val withDefaults = withDefaults ?: return false
+            hasDefault[index]?.let { return it }
             val one = args.copyOf().also { it[index] = oneOf(primary.parameterTypes[index]) }
-            runCatching {
-                fieldsOf(withDefaults!!.newInstance(*arguments(args, absent))) ==
+            return runCatching {
+                fieldsOf(withDefaults.newInstance(*arguments(args, absent))) ==
                     fieldsOf(withDefaults.newInstance(*arguments(one, absent)))
-            }.getOrDefault(false)
+            }.onSuccess { hasDefault[index] = it }.getOrDefault(false)
         }
 
         private fun fieldsOf(value: Any): List<Any?> = value.javaClass.declaredFields
