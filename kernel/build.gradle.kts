@@ -25,7 +25,7 @@ dependencies {
     api(libs.ktor.server.websockets)
     api(libs.jgrapht.core)
     api(libs.jackson.dataformat.xml)
-    api(libs.jackson.module.kotlin)
+    api(libs.jackson.module.parameter.names)
     api(libs.jackson.dataformat.yaml)
     api(libs.logback.classic)
     api(libs.sqlite.jdbc)
@@ -39,4 +39,10 @@ dependencies {
     testImplementation(libs.ktor.server.test.host)
     testImplementation(libs.swagger.parser)
     testImplementation(libs.json.schema.validator)
+}
+
+// As kernel/pom.xml's exclusion on ktor-server-core: kTCS runs without kotlin-reflect (with it on the class path,
+// every typeOf() at start-up builds full reflection descriptors). Tests get it from Kotest and MockK.
+configurations.named("runtimeClasspath") {
+    exclude(group = "org.jetbrains.kotlin", module = "kotlin-reflect")
 }

@@ -5,7 +5,7 @@ plugins {
 dependencies {
     implementation(project(":extension-api"))
     implementation(libs.jackson.dataformat.xml)
-    implementation(libs.jackson.module.kotlin)
+    implementation(libs.jackson.module.parameter.names)
     implementation(libs.ktor.network)
     testImplementation(project(":kernel"))
 }

@@ -17,6 +17,10 @@ base {
 
 kotlin {
     jvmToolchain(17)
+    // As the parent pom's javaParameters: Jackson binds Kotlin classes by their constructors' parameter names.
+    compilerOptions {
+        javaParameters.set(true)
+    }
 }
 
 // Precompiled script plugins get no type-safe `libs` accessor, so the catalog is looked up by alias.

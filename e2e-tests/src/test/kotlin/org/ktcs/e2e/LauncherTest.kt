@@ -1,6 +1,7 @@
 package org.ktcs.e2e
 
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.collections.shouldContainAll
 import io.kotest.matchers.collections.shouldHaveSize
 import io.kotest.matchers.shouldBe
@@ -13,6 +14,7 @@ import java.net.http.HttpRequest
 import java.net.http.HttpResponse
 import java.nio.file.Files
 import java.nio.file.Path
+import java.util.jar.JarFile
 import kotlin.time.Duration.Companion.seconds
 
 /** `./ktcs` as the README tells a user to run it. */
@@ -67,10 +69,14 @@ class LauncherTest : FunSpec({
     ) {
         KtcsProcess(*local).use { ktcs ->
             ktcs.awaitLine("kTCS ready")
-            val command = Files.readString(Path.of("/proc/${ktcs.pid}/cmdline")).replace('\u0000', ' ')
+            val arguments = Files.readString(Path.of("/proc/${ktcs.pid}/cmdline")).split('\u0000')
+            val command = arguments.joinToString(" ")
 
             command shouldContain "${RepositoryRoot.path}/target/run/"
             command shouldNotContain "kernel/target/ktcs-kernel.jar"
+            // kotlin-reflect is the tests' (Kotest, MockK): on kTCS's class path, every typeOf() at start-up would
+            // build full reflection descriptors, about a tenth of kTCS's memory.
+            jarsOf(arguments[arguments.indexOf("-cp") + 1]).filter { it.startsWith("kotlin-reflect") }.shouldBeEmpty()
             ktcs.terminate() shouldBe 0
         }
     }
@@ -136,6 +142,17 @@ class LauncherTest : FunSpec({
         }
     }
 })
+
+/** The names of the jars on [classPath]: its entries, directory wildcards expanded, and what their manifests add. */
+private fun jarsOf(classPath: String): List<String> = classPath.split(':').flatMap { entry ->
+    if (entry.endsWith("/*")) {
+        Files.list(Path.of(entry.removeSuffix("/*"))).use { jars -> jars.map { it.fileName.toString() }.toList() }
+    } else {
+        val manifestPath = JarFile(entry).use { it.manifest?.mainAttributes?.getValue("Class-Path") }.orEmpty()
+        listOf(Path.of(entry).fileName.toString()) +
+            manifestPath.split(' ').filter { it.isNotBlank() }.map { Path.of(it).fileName.toString() }
+    }
+}
 
 private val TINY_MODEL = """
     <?xml version="1.0" encoding="UTF-8" standalone="yes"?>

@@ -1,12 +1,17 @@
 package org.ktcs.xmlchannels
 
 import com.fasterxml.jackson.annotation.JsonInclude
+import com.fasterxml.jackson.annotation.JsonSetter
+import com.fasterxml.jackson.annotation.Nulls
+import com.fasterxml.jackson.databind.DeserializationContext
 import com.fasterxml.jackson.databind.DeserializationFeature
+import com.fasterxml.jackson.databind.deser.DeserializationProblemHandler
+import com.fasterxml.jackson.databind.exc.MismatchedInputException
 import com.fasterxml.jackson.dataformat.xml.XmlFactory
 import com.fasterxml.jackson.dataformat.xml.XmlMapper
 import com.fasterxml.jackson.dataformat.xml.annotation.JacksonXmlProperty
 import com.fasterxml.jackson.dataformat.xml.ser.ToXmlGenerator
-import com.fasterxml.jackson.module.kotlin.kotlinModule
+import com.fasterxml.jackson.module.paramnames.ParameterNamesModule
 import java.io.ByteArrayInputStream
 import javax.xml.stream.XMLInputFactory
 import javax.xml.stream.XMLOutputFactory
@@ -22,8 +27,12 @@ internal object HostXml {
         setProperty(XMLInputFactory.IS_SUPPORTING_EXTERNAL_ENTITIES, false)
     }
 
+    // The transfer objects' defaults are all null, false or an empty list, which plain Jackson gives them too:
+    // constructor parameter names (-java-parameters) are all it needs, and no kotlin-reflect.
     val mapper: XmlMapper = XmlMapper.builder(XmlFactory(inputFactory, XMLOutputFactory.newFactory()))
-        .addModule(kotlinModule())
+        .addModule(ParameterNamesModule())
+        .withConfigOverride(List::class.java) { it.setterInfo = JsonSetter.Value.forValueNulls(Nulls.AS_EMPTY) }
+        .addHandler(MissingValues)
         .defaultUseWrapper(false)
         // openTCS's JAXB binding ignored what it did not know; so do we.
         .disable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES)
@@ -54,6 +63,23 @@ internal object HostXml {
 
     /** [value] as a document with openTCS's declaration. */
     fun write(value: Any): String = DECLARATION + "\n" + mapper.writeValueAsString(value)
+
+    /** A required value left out fails Kotlin's null check in the constructor: reported as missing, by name. */
+    private object MissingValues : DeserializationProblemHandler() {
+        override fun handleInstantiationProblem(
+            ctxt: DeserializationContext,
+            instClass: Class<*>,
+            argument: Any?,
+            t: Throwable,
+        ): Any {
+            val parameter = generateSequence(t) { it.cause }.filterIsInstance<NullPointerException>().firstOrNull()
+                ?.message?.takeIf { it.startsWith("Parameter specified as non-null is null") }
+                ?.substringAfterLast("parameter ", "")?.ifEmpty { null }
+                ?: return NOT_HANDLED
+            throw MismatchedInputException.from(ctxt.parser, instClass, "missing required value '$parameter'")
+                .apply { prependPath(instClass, parameter) }
+        }
+    }
 }
 
 /** `property`: a key and a value, on orders and destinations. */

@@ -12,8 +12,8 @@ import com.fasterxml.jackson.dataformat.xml.XmlFactory
 import com.fasterxml.jackson.dataformat.xml.XmlMapper
 import com.fasterxml.jackson.dataformat.xml.ser.ToXmlGenerator
 import com.fasterxml.jackson.dataformat.xml.util.DefaultXmlPrettyPrinter
-import com.fasterxml.jackson.module.kotlin.kotlinModule
 import org.codehaus.stax2.XMLStreamWriter2
+import org.ktcs.kernel.jackson.KotlinClasses
 import javax.xml.stream.XMLInputFactory
 import javax.xml.stream.XMLOutputFactory
 
@@ -31,8 +31,9 @@ internal object ModelXml {
     /** Built on first use: reading most files needs only [inputFactory] (see StreamingModelReader). */
     val mapper: XmlMapper by lazy { newMapper() }
 
-    private fun newMapper(): XmlMapper = XmlMapper.builder(XmlFactory(inputFactory, XMLOutputFactory.newFactory()))
-        .addModule(kotlinModule())
+    private fun newMapper(): XmlMapper = KotlinClasses.configure(
+        XmlMapper.builder(XmlFactory(inputFactory, XMLOutputFactory.newFactory())),
+    )
         .addModule(
             SimpleModule("xsd-int")
                 .addDeserializer(Int::class.javaPrimitiveType, XsdInt)

@@ -17,8 +17,9 @@ import javax.xml.stream.XMLStreamConstants.START_ELEMENT
 import javax.xml.stream.XMLStreamReader
 
 /**
- * Reads a plant-model file straight into its transfer objects with StAX, without Jackson's data binding: Jackson's
- * Kotlin module loads Kotlin reflection for every transfer object, which was most of kTCS's start-up.
+ * Reads a plant-model file straight into its transfer objects with StAX, without Jackson's data binding: Jackson
+ * introspects every transfer object (with its Kotlin module, through Kotlin reflection), which was most of kTCS's
+ * start-up.
  *
  * It reads only what it understands completely and gives up (`null`) on anything else: an element or attribute the
  * transfer objects have no place for, a value Jackson might read differently, a required value that is missing.

@@ -14,12 +14,12 @@ import com.fasterxml.jackson.databind.ObjectMapper
 import com.fasterxml.jackson.databind.SerializerProvider
 import com.fasterxml.jackson.databind.json.JsonMapper
 import com.fasterxml.jackson.databind.module.SimpleModule
-import com.fasterxml.jackson.module.kotlin.kotlinModule
 import org.ktcs.api.event.UserNotification
 import org.ktcs.api.order.OrderSequence
 import org.ktcs.api.order.Step
 import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.order.VehicleOrientation
+import org.ktcs.kernel.jackson.KotlinClasses
 import java.time.Instant
 import java.util.concurrent.ConcurrentHashMap
 
@@ -28,8 +28,7 @@ import java.util.concurrent.ConcurrentHashMap
  * (an order without deadline has [Instant.MAX]); only fields are written, computed properties are not.
  */
 object StateCodec {
-    private val mapper: ObjectMapper = JsonMapper.builder()
-        .addModule(kotlinModule())
+    private val mapper: ObjectMapper = KotlinClasses.configure(JsonMapper.builder())
         .addModule(
             SimpleModule()
                 .addSerializer(Instant::class.java, InstantWriter)
