@@ -55,7 +55,7 @@ internal class CandidateRanking(
     val routeKey: CandidatePriority? = keys.firstOrNull { it.needsRoute }
 
     val beforeRouting: Comparator<Candidate> =
-        if (keys.none { it.needsRoute }) {
+        if (routeKey == null) {
             full
         } else {
             compose(keys.takeWhile { !it.needsRoute }.map { candidateComparator(it, atRisk) })

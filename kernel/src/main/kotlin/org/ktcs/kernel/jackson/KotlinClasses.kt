@@ -146,27 +146,20 @@ internal object KotlinClasses {
                 it.get(value)
             }
 
-        private fun zeroOf(type: Class<*>): Any? = when (type) {
-            Long::class.javaPrimitiveType -> 0L
-            Int::class.javaPrimitiveType -> 0
-            Boolean::class.javaPrimitiveType -> false
-            Double::class.javaPrimitiveType -> 0.0
-            Float::class.javaPrimitiveType -> 0.0f
-            Short::class.javaPrimitiveType -> 0.toShort()
-            Byte::class.javaPrimitiveType -> 0.toByte()
-            Char::class.javaPrimitiveType -> 0.toChar()
-            else -> null
-        }
+        private fun zeroOf(type: Class<*>): Any? = primitive(type, 0)
 
-        private fun oneOf(type: Class<*>): Any? = when (type) {
-            Long::class.javaPrimitiveType -> 1L
-            Int::class.javaPrimitiveType -> 1
-            Boolean::class.javaPrimitiveType -> true
-            Double::class.javaPrimitiveType -> 1.0
-            Float::class.javaPrimitiveType -> 1.0f
-            Short::class.javaPrimitiveType -> 1.toShort()
-            Byte::class.javaPrimitiveType -> 1.toByte()
-            Char::class.javaPrimitiveType -> 1.toChar()
+        private fun oneOf(type: Class<*>): Any? = primitive(type, 1)
+
+        /** [number] as a value of the primitive [type]; `null` for any other type. */
+        private fun primitive(type: Class<*>, number: Int): Any? = when (type) {
+            Long::class.javaPrimitiveType -> number.toLong()
+            Int::class.javaPrimitiveType -> number
+            Boolean::class.javaPrimitiveType -> number != 0
+            Double::class.javaPrimitiveType -> number.toDouble()
+            Float::class.javaPrimitiveType -> number.toFloat()
+            Short::class.javaPrimitiveType -> number.toShort()
+            Byte::class.javaPrimitiveType -> number.toByte()
+            Char::class.javaPrimitiveType -> number.toChar()
             else -> null
         }
 
