@@ -78,6 +78,10 @@ class WebApiTest : FunSpec({
             }
             call("POST", "$base/transportOrders/T1/withdrawal?immediate=true").statusCode() shouldBe 200
             json(call("GET", "$base/transportOrders/T1")).jsonObject["state"]!!.jsonPrimitive.content shouldBe "FAILED"
+            // The name is the path's, whatever the query says.
+            json(call("POST", "$base/transportOrders/T5?NAME=Other", order)).jsonObject["name"]!!.jsonPrimitive
+                .content shouldBe "T5"
+            call("GET", "$base/transportOrders/Other").statusCode() shouldBe 404
         } finally {
             application.stop()
         }
