@@ -123,9 +123,9 @@ class StateJournal(
     }
 
     /**
-     * Waits, holding [lock], until there is a commit to make: with ASYNC any change; with COMMIT a client's mark once
-     * the kernel woke the writer, or the kernel's own changes after [gatherNanos] (also a mark whose wake-up did not
-     * come by then, e.g. from a stopping kernel).
+     * Waits, holding [lock], until there is a commit to make: with ASYNC any change; with COMMIT a complete group of
+     * marks once the kernel woke the writer, or the kernel's own changes after [gatherNanos] (also a mark whose
+     * wake-up did not come by then, e.g. from a stopping kernel).
      */
     private fun awaitWork() {
         while (running) {
@@ -133,9 +133,12 @@ class StateJournal(
                 if (pending.isNotEmpty()) return
                 changed.await()
             } else if (flushRequested > flushed) {
-                if (!wakeQueued && groupComplete()) return
-                // Woken by the group's last mark, or at its deadline with the requests that came by then.
-                if (changed.awaitNanos(groupDeadline - System.nanoTime()) <= 0L) return
+                // The group is complete once its last request marked (or its deadline passed); then the kernel's
+                // wake-up, which comes after the requests queued behind that mark, starts the commit.
+                val complete = groupComplete()
+                if (complete && !wakeQueued) return
+                val timedOut = changed.awaitNanos(if (complete) gatherNanos else groupDeadline - System.nanoTime())
+                if (timedOut <= 0L && complete) return
             } else {
                 // Until the group's deadline a mark signals only once the group is complete, so wait no longer.
                 val untilGroup = groupDeadline - System.nanoTime()
