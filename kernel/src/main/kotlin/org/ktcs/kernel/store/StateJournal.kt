@@ -73,7 +73,8 @@ class StateJournal(
         val mark = lock.withLock {
             if (appended > flushRequested) flushRequested = appended
             if (flushRequested > flushed) marked++
-            wake = flushRequested > flushed && !wakeQueued
+            // The group's last mark wakes the writer (before its deadline the writer waits for no fewer).
+            wake = flushRequested > flushed && !wakeQueued && groupComplete()
             if (wake) wakeQueued = true
             appended
         }
@@ -86,12 +87,12 @@ class StateJournal(
         if (now) committed()
     }
 
-    // The writer is woken only once the group it waits for is complete (or with a mark after a quiet moment).
     private fun wakeWriter() = lock.withLock {
         wakeQueued = false
-        if (groupComplete()) changed.signal()
+        changed.signal()
     }
 
+    /** Whether the group the writer waits for is complete: as many marks as expected, or its deadline passed. */
     private fun groupComplete() = marked >= expected || System.nanoTime() - groupDeadline >= 0
 
     /** Writes what is pending and stops the writer (waiting at most 15 s for a store that cannot be written). */
