@@ -47,7 +47,13 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
         if (stats != null && cpuStart != null) {
             figures.record("${name}_cpu_per_post_ms", (stats.cpuSeconds() - cpuStart) * MILLIS / result.count)
         }
-        if (stats != null && threadsStart != null) recordThreads(name, ThreadCpu.byKind(threadsStart, stats.threads()), result.count)
+        if (stats != null && threadsStart != null) {
+            recordThreads(
+                name,
+                ThreadCpu.byKind(threadsStart, stats.threads()),
+                result.count,
+            )
+        }
         val threadEnd = stats?.threadCpuSeconds(KERNEL_THREAD)
         if (threadStart != null && threadEnd != null) {
             figures.record("${name}_kernel_thread_cpu_per_post_ms", (threadEnd - threadStart) * MILLIS / result.count)
