@@ -133,6 +133,25 @@ class StateJournalTest : FunSpec({
         }
     }
 
+    test("a group whose commit fails is answered by none until a retry commits all of it") {
+        val store = RecordingStore()
+        val failures = java.util.concurrent.atomic.AtomicInteger(1)
+        store.beforeWrite = { if (failures.getAndDecrement() > 0) throw java.sql.SQLException("disk full") }
+        val wakes = java.util.concurrent.LinkedBlockingQueue<() -> Unit>()
+        StateJournal(store, waitForCommit = true, later = wakes::add).use { journal ->
+            val answered = java.util.concurrent.CountDownLatch(3)
+            (1..3).forEach { request ->
+                journal.append(put("order-$request"))
+                journal.whenCommitted(journal.mark()) { answered.countDown() }
+            }
+            wakes.poll()()
+            answered.await(500, TimeUnit.MILLISECONDS) shouldBe false
+            answered.count shouldBe 3
+            answered.await(5, TimeUnit.SECONDS) shouldBe true
+            store.writes.single() shouldBe ((1..3).map { "order-$it" } to true)
+        }
+    }
+
     test("a request is answered only once the commit holding its change returned from the disk") {
         val store = RecordingStore()
         val onDisk = java.util.concurrent.CountDownLatch(1)
