@@ -41,16 +41,31 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
         val stats = ktcs.stats
         val cpuStart = stats?.cpuSeconds()
         val threadStart = stats?.threadCpuSeconds(KERNEL_THREAD)
+        val threadsStart = stats?.threads()
         val result = OrderPosting.post(ktcs.client, batch, clients, kind)
         record(name, result)
         if (stats != null && cpuStart != null) {
             figures.record("${name}_cpu_per_post_ms", (stats.cpuSeconds() - cpuStart) * MILLIS / result.count)
+        }
+        if (stats != null && threadsStart != null) {
+            recordThreads(
+                name,
+                ThreadCpu.byKind(threadsStart, stats.threads()),
+                result.count,
+            )
         }
         val threadEnd = stats?.threadCpuSeconds(KERNEL_THREAD)
         if (threadStart != null && threadEnd != null) {
             figures.record("${name}_kernel_thread_cpu_per_post_ms", (threadEnd - threadStart) * MILLIS / result.count)
         }
         return result
+    }
+
+    /** The CPU per POST of the kinds of thread that used most, e.g. `create_8_clients_cpu_ms_per_post.kernel: 0.03`. */
+    private fun recordThreads(name: String, kinds: List<Pair<String, Double>>, posts: Int) {
+        kinds.take(THREAD_KINDS_SHOWN).forEach { (kind, seconds) ->
+            figures.record("${name}_cpu_ms_per_post.$kind", seconds * MILLIS / posts)
+        }
     }
 
     private fun cpuPerOrder(ktcs: KtcsUnderTest, batch: List<BenchOrder>, size: Int) {
@@ -123,6 +138,7 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
         private const val CLIENTS_NOTE = "create_*/post_p50 without a suffix: the JDK's HttpClient; " +
             "*_raw: the bench's lean client (keep-alive sockets, requests encoded beforehand)"
         const val CONCURRENT_CLIENTS = 8
+        private const val THREAD_KINDS_SHOWN = 4
         private const val MILLIS = 1000.0
         private const val MEDIAN = 0.5
         private const val P95 = 0.95

@@ -64,8 +64,11 @@ class StateStore private constructor(
                 deletes.getValue(table).executeBatch()
             }
             connection.commit()
-        } catch (error: SQLException) {
+        } catch (error: Exception) {
+            // Nothing of a failed group stays: not its executed rows, nor the rows staged before a value failed to
+            // encode (the retry stages them again).
             runCatching { connection.rollback() }
+            (upserts.values + deletes.values).forEach { statement -> runCatching { statement.clearBatch() } }
             throw error
         }
     }

@@ -2,12 +2,12 @@ package org.ktcs.kernel.store
 
 import com.fasterxml.jackson.core.JsonFactory
 import com.fasterxml.jackson.core.JsonGenerator
+import com.fasterxml.jackson.core.io.SegmentedStringWriter
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.DriveOrder
 import org.ktcs.api.order.HistoryEntry
 import org.ktcs.api.order.Route
 import org.ktcs.api.order.TransportOrder
-import java.io.StringWriter
 import java.time.Instant
 
 /**
@@ -19,9 +19,15 @@ import java.time.Instant
 internal class TransportOrderWriter(private val factory: JsonFactory) {
     /** The JSON of [order]. */
     fun write(order: TransportOrder): String {
-        val text = StringWriter(INITIAL_CHARS)
-        factory.createGenerator(text).use { order(it, order) }
-        return text.toString()
+        // Jackson's own segmented writer: no synchronised StringBuffer, its buffers recycled between orders.
+        val buffers = factory._getBufferRecycler()
+        try {
+            val text = SegmentedStringWriter(buffers)
+            factory.createGenerator(text).use { order(it, order) }
+            return text.andClear
+        } finally {
+            buffers.releaseToPool()
+        }
     }
 
     private fun order(json: JsonGenerator, order: TransportOrder) {
@@ -95,9 +101,5 @@ internal class TransportOrderWriter(private val factory: JsonFactory) {
         writeObjectFieldStart("properties")
         properties.forEach(::writeStringField)
         writeEndObject()
-    }
-
-    private companion object {
-        const val INITIAL_CHARS = 1024
     }
 }

@@ -3,6 +3,8 @@ package org.ktcs.kernel.store
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.collections.shouldContainExactly
+import io.kotest.matchers.longs.shouldBeGreaterThan
+import io.kotest.matchers.longs.shouldBeLessThan
 import io.kotest.matchers.shouldBe
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeout
@@ -62,6 +64,91 @@ class StateJournalTest : FunSpec({
             wakes.poll()()
             answered.await(5, TimeUnit.SECONDS) shouldBe true
             store.writes.single() shouldBe ((0 until 8).map { "order-$it" } to true)
+        }
+    }
+
+    test("under load the next flushed commit waits for as many requests as the last one answered, then answers all") {
+        val store = RecordingStore()
+        val wakes = java.util.concurrent.LinkedBlockingQueue<() -> Unit>()
+        val onDisk = java.util.concurrent.Semaphore(0)
+        store.beforeWrite = { onDisk.acquire() }
+        // Gather and group deadline longer than the test: only a complete group can start a flushed commit.
+        StateJournal(store, true, gatherNanos = 60_000_000_000L, groupNanos = 60_000_000_000L, later = wakes::add)
+            .use { journal ->
+                // Requests queued in the kernel mark one after the other; then the kernel runs the wake-ups.
+                fun requests(names: List<String>, answered: java.util.concurrent.CountDownLatch) {
+                    names.forEach { name ->
+                        journal.append(put(name))
+                        journal.whenCommitted(journal.mark()) { answered.countDown() }
+                    }
+                    generateSequence { wakes.poll() }.forEach { it() }
+                }
+                val first = java.util.concurrent.CountDownLatch(3)
+                requests((1..3).map { "first-$it" }, first)
+                Thread.sleep(100)
+                first.count shouldBe 3 // the group is not answered before its commit is on the disk
+                onDisk.release(10)
+                first.await(5, TimeUnit.SECONDS) shouldBe true
+
+                val second = java.util.concurrent.CountDownLatch(3)
+                requests((1..2).map { "second-$it" }, second)
+                Thread.sleep(100)
+                second.count shouldBe 3
+                store.writes.size shouldBe 1
+                requests(listOf("second-3"), second)
+                second.await(5, TimeUnit.SECONDS) shouldBe true
+                store.writes shouldBe listOf(
+                    (1..3).map { "first-$it" } to true,
+                    (1..3).map { "second-$it" } to true,
+                )
+            }
+    }
+
+    test("a group that does not complete is committed at its deadline; one client never waits for a group") {
+        val store = RecordingStore()
+        val wakes = java.util.concurrent.LinkedBlockingQueue<() -> Unit>()
+        StateJournal(store, true, groupNanos = 200_000_000L, later = wakes::add).use { journal ->
+            fun request(name: String): java.util.concurrent.CountDownLatch {
+                val answered = java.util.concurrent.CountDownLatch(1)
+                journal.append(put(name))
+                journal.whenCommitted(journal.mark()) { answered.countDown() }
+                return answered
+            }
+            fun wake() = generateSequence { wakes.poll() }.forEach { it() }
+            val pair = listOf(request("a"), request("b")) // answered by one commit: the next group expects two
+            wake()
+            pair.forEach { it.await(5, TimeUnit.SECONDS) shouldBe true }
+            val started = System.nanoTime()
+            val third = request("c")
+            wake()
+            third.await(5, TimeUnit.SECONDS) shouldBe true
+            (System.nanoTime() - started) shouldBeGreaterThan 150_000_000L
+            // The commit at the deadline answered one request: the next one is committed at once.
+            val alone = System.nanoTime()
+            val fourth = request("d")
+            wake()
+            fourth.await(5, TimeUnit.SECONDS) shouldBe true
+            (System.nanoTime() - alone) shouldBeLessThan 150_000_000L
+            store.writes.map { it.first } shouldBe listOf(listOf("a", "b"), listOf("c"), listOf("d"))
+        }
+    }
+
+    test("a group whose commit fails is answered by none until a retry commits all of it") {
+        val store = RecordingStore()
+        val failures = java.util.concurrent.atomic.AtomicInteger(1)
+        store.beforeWrite = { if (failures.getAndDecrement() > 0) throw java.sql.SQLException("disk full") }
+        val wakes = java.util.concurrent.LinkedBlockingQueue<() -> Unit>()
+        StateJournal(store, waitForCommit = true, later = wakes::add).use { journal ->
+            val answered = java.util.concurrent.CountDownLatch(3)
+            (1..3).forEach { request ->
+                journal.append(put("order-$request"))
+                journal.whenCommitted(journal.mark()) { answered.countDown() }
+            }
+            wakes.poll()()
+            answered.await(500, TimeUnit.MILLISECONDS) shouldBe false
+            answered.count shouldBe 3
+            answered.await(5, TimeUnit.SECONDS) shouldBe true
+            store.writes.single() shouldBe ((1..3).map { "order-$it" } to true)
         }
     }
 
