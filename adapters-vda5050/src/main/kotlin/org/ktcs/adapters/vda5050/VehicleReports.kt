@@ -13,7 +13,9 @@ import java.util.concurrent.atomic.AtomicReference
  * What a VDA 5050 vehicle's messages tell the kernel: its position, pose, energy, loads, length, errors and state.
  * A state message repeats most of it every second, and an unchanged value is not worth a kernel task, so only
  * changes are reported; [reset] (when the driver is enabled) reports everything again. Poses (from `state` and
- * `visualization`) are coalesced: however many arrive while one waits for the kernel, the kernel reports the latest.
+ * `visualization`) are coalesced: however many arrive while one waits for the kernel, the kernel reports the latest;
+ * a pose that matches the last one taken at what the kernel shows (millimetres, a tenth of a degree) costs no kernel
+ * task at all, so a vehicle standing still (or a localisation jittering below that) keeps the kernel thread idle.
  */
 internal class VehicleReports(
     private val vehicleName: String,
@@ -27,10 +29,14 @@ internal class VehicleReports(
     private var pose: Pose? = null
     private val pendingPose = AtomicReference<Pose?>()
 
+    // The last pose handed towards the kernel, on the link's threads (guarded by this).
+    private var lastTaken: Pose? = null
+
     fun reset() {
         state = null
         energy = -1
         pose = null
+        synchronized(this) { lastTaken = null }
     }
 
     /** Everything a `state` message says about the vehicle except its state, which depends on the connection. */
@@ -60,21 +66,31 @@ internal class VehicleReports(
     }
 
     /** The vehicle's pose (metres, radians) from a message that just arrived, on the link's thread. */
+    @Synchronized
     fun pose(x: Double, y: Double, theta: Double) {
-        if (pendingPose.getAndSet(Pose(x, y, theta)) == null) context.clock.schedule(0, ::reportPose)
+        val next = Pose.of(x, y, theta)
+        if (next == lastTaken) return
+        lastTaken = next
+        if (pendingPose.getAndSet(next) == null) context.clock.schedule(0, ::reportPose)
     }
 
     private fun reportPose() {
         val latest = pendingPose.getAndSet(null) ?: return
         if (latest == pose) return
         pose = latest
-        context.reportPrecisePosition(
-            Position((latest.x * MM_PER_M).toLong(), (latest.y * MM_PER_M).toLong()),
-            Math.toDegrees(latest.theta),
-        )
+        context.reportPrecisePosition(Position(latest.xMillimetres, latest.yMillimetres), latest.degrees)
     }
 
-    private data class Pose(val x: Double, val y: Double, val theta: Double)
+    /** A pose at the resolution the kernel reports it: millimetres and a tenth of a degree. */
+    private data class Pose(val xMillimetres: Long, val yMillimetres: Long, val degrees: Double) {
+        companion object {
+            fun of(x: Double, y: Double, theta: Double) = Pose(
+                (x * MM_PER_M).toLong(),
+                (y * MM_PER_M).toLong(),
+                Math.round(Math.toDegrees(theta) * TENTHS) / TENTHS,
+            )
+        }
+    }
 
     /** openTCS's `vda5050:vehicleLengthLoaded`/`Unloaded`: the vehicle's length follows its load state. */
     private fun length(loaded: Boolean) {
@@ -100,5 +116,6 @@ internal class VehicleReports(
 
     companion object {
         const val MM_PER_M = 1000.0
+        private const val TENTHS = 10.0
     }
 }

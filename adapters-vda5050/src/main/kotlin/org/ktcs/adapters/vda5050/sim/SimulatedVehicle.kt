@@ -50,7 +50,9 @@ data class SimulatedVehicleSpec(
  * A VDA 5050 2.0 vehicle played in software: it drives along the released nodes of its order at its speed, carries
  * out node actions (pick, drop, charging, anything else takes [SimulatedVehicleSpec.actionMillis]), honours the
  * instant actions, and reports `state` at its interval and on every event, `visualization` more often, and its
- * `connection` (with CONNECTIONBROKEN as its MQTT last will). All its work runs on [executor], one tick at a time.
+ * `connection` (with CONNECTIONBROKEN as its MQTT last will). All its work runs on [executor], one piece at a time
+ * per vehicle: the simulator and the bench share a pool of two threads among all vehicles, so a vehicle's tick and an
+ * order arriving for it would otherwise change its state at once.
  */
 class SimulatedVehicle(
     val spec: SimulatedVehicleSpec,
@@ -63,8 +65,9 @@ class SimulatedVehicle(
         "sim-${spec.serialNumber}",
         endpoint,
         will = LastWill("$topic/connection", connectionJson(Vda.CONNECTION_BROKEN, 0)),
-    ) { up -> if (up) executor.execute { announceOnline() } }
+    ) { up -> if (up) executor.execute { guarded { announceOnline() } } }
     private val headerIds = HashMap<String, Long>()
+    private val work = Any() // held by whatever changes the vehicle's state, see the class comment
 
     // The vehicle's state, touched only on the executor's thread.
     private var x = spec.startX
@@ -89,13 +92,17 @@ class SimulatedVehicle(
 
     /** Errors a test or the operator makes the vehicle report (FATAL ones stop it). */
     fun raiseError(type: String, level: String = Vda.FATAL, description: String? = null) = executor.execute {
-        errors += VehicleError(type, level, description)
-        publishState()
+        guarded {
+            errors += VehicleError(type, level, description)
+            publishState()
+        }
     }
 
     fun clearErrors() = executor.execute {
-        errors.clear()
-        publishState()
+        guarded {
+            errors.clear()
+            publishState()
+        }
     }
 
     fun start() {
@@ -123,10 +130,12 @@ class SimulatedVehicle(
         link.close()
     }
 
-    private fun guarded(action: () -> Unit) = try {
-        action()
-    } catch (error: RuntimeException) {
-        log.warn("simulated vehicle {}: {}", spec.serialNumber, error.toString())
+    private fun guarded(action: () -> Unit) = synchronized(work) {
+        try {
+            action()
+        } catch (error: RuntimeException) {
+            log.warn("simulated vehicle {}: {}", spec.serialNumber, error.toString())
+        }
     }
 
     private fun announceOnline() {
