@@ -15,6 +15,7 @@ import java.net.http.HttpResponse
 import java.nio.file.Files
 import java.nio.file.Path
 import java.util.jar.JarFile
+import java.util.zip.ZipEntry
 import kotlin.time.Duration.Companion.seconds
 
 /** `./ktcs` as the README tells a user to run it. */
@@ -77,6 +78,11 @@ class LauncherTest : FunSpec({
             // kotlin-reflect is the tests' (Kotest, MockK): on kTCS's class path, every typeOf() at start-up would
             // build full reflection descriptors, about a tenth of kTCS's memory.
             jarsOf(arguments[arguments.indexOf("-cp") + 1]).filter { it.startsWith("kotlin-reflect") }.shouldBeEmpty()
+            // The copy's manifests are stored (StoredManifests): the JDK keeps no Inflater per open jar for them.
+            val compressed = jarPathsOf(arguments[arguments.indexOf("-cp") + 1]).filter { jar ->
+                JarFile(jar.toFile()).use { it.getEntry(JarFile.MANIFEST_NAME)?.method == ZipEntry.DEFLATED }
+            }
+            compressed.shouldBeEmpty()
             ktcs.terminate() shouldBe 0
         }
     }
@@ -142,6 +148,15 @@ class LauncherTest : FunSpec({
         }
     }
 })
+
+/** The jar files on [classPath]: its entries, directory wildcards expanded. */
+private fun jarPathsOf(classPath: String): List<Path> = classPath.split(':').flatMap { entry ->
+    if (entry.endsWith("/*")) {
+        Files.list(Path.of(entry.removeSuffix("/*"))).use { jars -> jars.filter { "$it".endsWith(".jar") }.toList() }
+    } else {
+        listOf(Path.of(entry))
+    }
+}
 
 /** The names of the jars on [classPath]: its entries, directory wildcards expanded, and what their manifests add. */
 private fun jarsOf(classPath: String): List<String> = classPath.split(':').flatMap { entry ->
