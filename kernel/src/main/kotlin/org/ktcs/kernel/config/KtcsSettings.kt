@@ -294,6 +294,15 @@ object PersistenceSettings {
             "vehicle at its last known position and reroutes it to its remaining destinations; WITHDRAW withdraws " +
             "them (their history says the kernel restarted).",
     )
+    val groupWait = intSetting(
+        "persistence.groupWait",
+        0,
+        0..100_000,
+        "Microseconds a flushed commit (COMMIT) may wait for the requests the store's writer expects back (those " +
+            "its last commit answered and those already waiting), so that one fsync answers more of them (0: commit " +
+            "as soon as the previous commit is on the disk). Pays on a disk whose fsync takes milliseconds; on a " +
+            "fast one it costs rate (README, durable state). A lone client never waits.",
+    )
     val logFileMaxSize = longSetting(
         "log.file.maxSize",
         50,
@@ -314,7 +323,17 @@ object PersistenceSettings {
     )
 
     val all: List<Setting<*>> =
-        listOf(durability, url, username, password, recovery, logFileMaxSize, logFileMaxHistory, logFileTotalSizeCap)
+        listOf(
+            durability,
+            url,
+            username,
+            password,
+            recovery,
+            groupWait,
+            logFileMaxSize,
+            logFileMaxHistory,
+            logFileTotalSizeCap,
+        )
 }
 
 /** When a change counts as stored (`persistence.durability`). */

@@ -19,13 +19,16 @@ class DurableState private constructor(
     private val stored: StoredState,
     durability: Durability,
     private val mode: RecoveryMode,
+    groupWaitMicros: Int,
 ) : AutoCloseable {
     private var kernel: KernelCore? = null
 
     // A client's mark wakes the writer after the kernel's queued requests (a group commit), once there is a kernel.
-    private val journal = StateJournal(store, durability == Durability.COMMIT) { wake ->
-        kernel?.context?.execute(wake) ?: wake()
-    }
+    private val journal = StateJournal(
+        store,
+        durability == Durability.COMMIT,
+        groupNanos = groupWaitMicros * 1_000L,
+    ) { wake -> kernel?.context?.execute(wake) ?: wake() }
     private var recovery: StateRecovery? = null
     private var recorder: StateRecorder? = null
 
@@ -75,7 +78,13 @@ class DurableState private constructor(
                 (System.nanoTime() - started) / 1_000_000,
                 durability,
             )
-            return DurableState(store, stored, durability, config[PersistenceSettings.recovery])
+            return DurableState(
+                store,
+                stored,
+                durability,
+                config[PersistenceSettings.recovery],
+                config[PersistenceSettings.groupWait],
+            )
         }
     }
 }

@@ -19,10 +19,11 @@ import kotlin.concurrent.withLock
  *
  * A group commit gathers what is on its way: a client's [mark] wakes the writer through [later] (the kernel context's
  * queue), that is after the requests already queued in the kernel made their changes and marked them too, so that
- * one fsync answers all of them; with one client that costs a task switch, not a wait. Under load the writer also
- * waits for the requests it expects back (see [expected]): the clients it just answered and those already waiting
- * send their next request, and one flushed commit for all of them costs one fsync and one wake-up of each of the web
- * server's threads instead of one per few requests; never longer than [groupNanos] after its last flushed commit.
+ * one fsync answers all of them; with one client that costs a task switch, not a wait. With [groupNanos] > 0
+ * (`persistence.groupWait`, for a slow disk) the writer also waits for the requests it expects back (see
+ * [expected]): the clients it just answered and those already waiting send their next request, and one flushed
+ * commit for all of them costs one fsync and one wake-up of each of the web server's threads instead of one per few
+ * requests; never longer than [groupNanos] after its last flushed commit.
  */
 class StateJournal(
     private val store: StoreWriter,
@@ -223,7 +224,7 @@ class StateJournal(
         const val NOTIFICATIONS_KEPT = 1000
         private const val FLUSHED_KEY = "lastFlush"
         private const val GATHER_NANOS = 5_000_000L
-        private const val GROUP_NANOS = 1_000_000L
+        private const val GROUP_NANOS = 0L // persistence.groupWait's default
         private const val RETRY_MILLIS = 1_000L
         private const val CLOSE_RETRIES = 5
         private const val CLOSE_TIMEOUT_MILLIS = 15_000L
