@@ -69,7 +69,7 @@ class SimulatedVehicle(
     private val headerIds = HashMap<String, Long>()
     private val work = Any() // held by whatever changes the vehicle's state, see the class comment
 
-    // The vehicle's state, touched only on the executor's thread.
+    // The vehicle's state, touched only on the executor's threads while holding [work].
     private var x = spec.startX
     private var y = spec.startY
     private var theta = 0.0
