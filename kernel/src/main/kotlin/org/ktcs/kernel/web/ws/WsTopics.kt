@@ -16,6 +16,7 @@ import org.ktcs.api.event.VehicleEvent
 import org.ktcs.api.model.Vehicle
 import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.service.KernelServices
+import org.ktcs.kernel.web.LastEncoded
 import org.ktcs.kernel.web.v1.V1Json
 import org.ktcs.kernel.web.v1.drivers.toDto
 import org.ktcs.kernel.web.v1.events.toSseDto
@@ -60,9 +61,9 @@ internal object WsTopics {
      * [encoded] keeps the last encoded states of vehicles and orders, which are the next events' previous states.
      */
     fun change(event: KernelEvent, encoded: EncodedObjects = EncodedObjects()): Change? = when (event) {
-        is VehicleEvent -> Change.of(WsTopic.VEHICLES, event, encoded.vehicles::of)
+        is VehicleEvent -> Change.of(WsTopic.VEHICLES, event, encoded::vehicle)
 
-        is TransportOrderEvent -> Change.of(WsTopic.TRANSPORT_ORDERS, event, encoded.orders::of)
+        is TransportOrderEvent -> Change.of(WsTopic.TRANSPORT_ORDERS, event, encoded::order)
 
         is OrderSequenceEvent -> Change.of(WsTopic.ORDER_SEQUENCES, event) { utf8(json.encodeToString(it.toSseDto())) }
 
@@ -85,35 +86,15 @@ internal object WsTopics {
 /** [text] as UTF-8 (`String.getBytes`, whose Latin-1 fast path Ktor's `Frame.Text(String)` does not take). */
 internal fun utf8(text: String): ByteArray = text.toByteArray(Charsets.UTF_8)
 
-/**
- * The objects' states as last encoded, by identity, for the [capacity] most recently changed objects: a driving
- * vehicle or an order under way changes many times a second, and the state an event reports as previous is the one
- * the event before reported as current, so each state is encoded once instead of twice. One instance serves every
- * WebSocket session (each state is encoded once, whoever follows it), so it is safe to use from several threads.
- */
-internal class LastEncoded<T : Any>(
-    private val capacity: Int,
-    private val nameOf: (T) -> String,
-    private val encode: (T) -> ByteArray,
-) {
-    private val last = object : LinkedHashMap<String, Pair<T, ByteArray>>(16, 0.75f, true) {
-        override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, Pair<T, ByteArray>>) = size > capacity
-    }
-
-    fun of(value: T): ByteArray {
-        val name = nameOf(value)
-        synchronized(last) { last[name]?.takeIf { it.first === value }?.let { return it.second } }
-        // Encoded outside the lock: two sessions may encode the same state at once, which costs only time.
-        val encoded = encode(value)
-        synchronized(last) { last[name] = value to encoded }
-        return encoded
-    }
-}
-
 /** The [LastEncoded] vehicles and transport orders that every WebSocket session of a server shares. */
 internal class EncodedObjects(capacity: Int = DEFAULT_CAPACITY) {
-    val vehicles = LastEncoded<Vehicle>(capacity, { it.name }) { utf8(V1Json.json.encodeToString(it.toSseDto())) }
-    val orders = LastEncoded<TransportOrder>(capacity, { it.name }, EncodedOrders::utf8)
+    private val vehicles =
+        LastEncoded<Vehicle, ByteArray>(capacity) { utf8(V1Json.json.encodeToString(it.toSseDto())) }
+    private val orders = LastEncoded<TransportOrder, ByteArray>(capacity, EncodedOrders::utf8)
+
+    fun vehicle(vehicle: Vehicle): ByteArray = vehicles.of(vehicle.name, vehicle)
+
+    fun order(order: TransportOrder): ByteArray = orders.of(order.name, order)
 
     private companion object {
         const val DEFAULT_CAPACITY = 512

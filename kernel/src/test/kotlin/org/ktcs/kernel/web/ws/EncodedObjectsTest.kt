@@ -12,6 +12,7 @@ import kotlinx.serialization.json.jsonObject
 import kotlinx.serialization.json.jsonPrimitive
 import org.ktcs.api.event.VehicleEvent
 import org.ktcs.api.model.Vehicle
+import org.ktcs.kernel.web.LastEncoded
 import org.ktcs.kernel.web.v1.V1Json
 import org.ktcs.kernel.web.v1.events.toSseDto
 
@@ -48,15 +49,15 @@ class EncodedObjectsTest : FunSpec({
 
     test("only the most recently changed objects are kept") {
         var encodings = 0
-        val last = LastEncoded<Vehicle>(2, { it.name }) {
+        val last = LastEncoded<Vehicle, ByteArray>(2) {
             encodings++
             utf8(V1Json.json.encodeToString(it.toSseDto()))
         }
         val vehicles = (1..3).map { Vehicle("Vehicle-0$it") }
-        vehicles.forEach { last.of(it) }
+        vehicles.forEach { last.of(it.name, it) }
 
-        last.of(vehicles[2])
-        last.of(vehicles[0])
+        last.of(vehicles[2].name, vehicles[2])
+        last.of(vehicles[0].name, vehicles[0])
 
         encodings shouldBe 4
     }

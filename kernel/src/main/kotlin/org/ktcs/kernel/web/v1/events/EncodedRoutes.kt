@@ -5,6 +5,7 @@ import kotlinx.serialization.json.JsonElement
 import kotlinx.serialization.json.JsonNull
 import kotlinx.serialization.json.JsonUnquotedLiteral
 import org.ktcs.api.order.Route
+import org.ktcs.kernel.web.LastEncoded
 import org.ktcs.kernel.web.v1.V1Json
 import org.ktcs.kernel.web.v1.orders.RouteDto
 import org.ktcs.kernel.web.v1.orders.toDto
@@ -18,23 +19,15 @@ import org.ktcs.kernel.web.v1.orders.toDto
 internal object EncodedRoutes {
     private const val CAPACITY = 512
 
-    private val last = object : LinkedHashMap<String, Pair<Route, EncodedRoute>>(16, 0.75f, true) {
-        override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, Pair<Route, EncodedRoute>>) =
-            size > CAPACITY
+    private val last = LastEncoded<Route, EncodedRoute>(CAPACITY) {
+        EncodedRoute(V1Json.json.encodeToString(RouteDto.serializer(), it.toDto()))
     }
 
     /** [route], the route of [driveOrder] (named by its transport order and its own name), as [RouteDto] JSON. */
-    fun of(driveOrder: String, route: Route?): JsonElement = route?.let { encoded(driveOrder, it).json } ?: JsonNull
+    fun of(driveOrder: String, route: Route?): JsonElement = route?.let { last.of(driveOrder, it).json } ?: JsonNull
 
     /** The same as UTF-8, `null` for no route (see [of]). */
-    fun utf8Of(driveOrder: String, route: Route?): ByteArray? = route?.let { encoded(driveOrder, it).utf8 }
-
-    private fun encoded(driveOrder: String, route: Route): EncodedRoute {
-        synchronized(last) { last[driveOrder]?.takeIf { it.first === route }?.let { return it.second } }
-        val encoded = EncodedRoute(V1Json.json.encodeToString(RouteDto.serializer(), route.toDto()))
-        synchronized(last) { last[driveOrder] = route to encoded }
-        return encoded
-    }
+    fun utf8Of(driveOrder: String, route: Route?): ByteArray? = route?.let { last.of(driveOrder, it).utf8 }
 
     /** One route's JSON, as a literal to put in a tree and as UTF-8 (made when first asked for). */
     private class EncodedRoute(text: String) {
