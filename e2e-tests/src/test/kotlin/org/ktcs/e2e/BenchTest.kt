@@ -37,6 +37,7 @@ class BenchTest : FunSpec({
                 "post_p50_raw_ms",
                 "get_orders_p50_ms",
                 "get_orders_p95_ms",
+                "get_orders_cpu_ms",
                 "get_unknown_order_p50_ms",
                 "get_unknown_order_cpu_ms",
             )

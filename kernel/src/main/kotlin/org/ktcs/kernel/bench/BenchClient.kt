@@ -42,9 +42,20 @@ class BenchClient(val baseUrl: String) {
     /** `GET` of [path], reading and dropping the body; returns its length in bytes. */
     fun getDiscarding(path: String): Long {
         val request = HttpRequest.newBuilder(uri(path)).timeout(TIMEOUT).GET().build()
-        val response = http.send(request, HttpResponse.BodyHandlers.ofByteArray())
+        val response = http.send(request, HttpResponse.BodyHandlers.ofInputStream())
         check(response.statusCode() == 200) { "GET $path answered ${response.statusCode()}" }
-        return response.body().size.toLong()
+        // Read into one reused buffer: collecting a list of several megabytes into an array (and that into another)
+        // made the bench's own small heap collect fully on every request, and the list's latency was the bench's.
+        return response.body().use { body ->
+            val discarded = ByteArray(DISCARD_BUFFER_BYTES)
+            var length = 0L
+            while (true) {
+                val read = body.read(discarded)
+                if (read < 0) break
+                length += read
+            }
+            length
+        }
     }
 
     /** The state of the transport order [name], or `null` if it is unknown or kTCS does not answer. */
@@ -67,6 +78,7 @@ class BenchClient(val baseUrl: String) {
         const val LOAD = "Load cargo"
         const val UNLOAD = "Unload cargo"
         private val TIMEOUT: Duration = Duration.ofSeconds(30)
+        private const val DISCARD_BUFFER_BYTES = 64 * 1024
 
         /** The path under `/v1` of the transport order [name]. */
         fun orderPath(name: String): String = "/transportOrders/${encode(name)}"
