@@ -48,6 +48,7 @@ class StateJournal(
     // them written again (rewriteUnflushed) before it is retried.
     private val unflushed = ArrayDeque<Pair<Long, Collection<StoreChange>>>()
     private var rewriteUnflushed = false
+    @Volatile
     private var running = true
     private var writerStopped = false
     private var wakeQueued = false
@@ -137,11 +138,10 @@ class StateJournal(
                 if (!running && pending.isEmpty() && !rewriteUnflushed) return
                 takeBatch()
             }
-            if (batch.isNotEmpty()) {
-                writeUntilDone(batch)
-                counts.add(batch.size)
-            }
+            val written = batch.isEmpty() || writeUntilDone(batch)
             lock.withLock {
+                // Stopping with a store that cannot be written: nothing of this batch or after it is answered.
+                if (!written) return
                 committed = upTo
                 if (waitForCommit) {
                     unflushed.addLast(upTo to batch)
@@ -274,14 +274,16 @@ class StateJournal(
                 "(%.1f per flush)".format(if (flushes == 0L) 0.0 else requests.toDouble() / flushes)
     }
 
-    private fun writeUntilDone(batch: Collection<StoreChange>) {
+    /** Writes [batch], retrying a failed write; false only if the journal stops before it could be written. */
+    private fun writeUntilDone(batch: Collection<StoreChange>): Boolean {
         var failures = 0
         while (true) {
             try {
                 store.write(batch)
                 trimNotifications(batch)
                 if (failures > 0) log.warn("state store writable again after {} failed attempt(s)", failures)
-                return
+                counts.add(batch.size)
+                return true
             } catch (error: Exception) {
                 if (failures++ == 0) {
                     log.error(
@@ -291,7 +293,7 @@ class StateJournal(
                 }
                 if (!running && failures > CLOSE_RETRIES) {
                     log.error("state store: {} change(s) not written at shutdown", batch.size)
-                    return
+                    return false
                 }
                 Thread.sleep(RETRY_MILLIS)
             }

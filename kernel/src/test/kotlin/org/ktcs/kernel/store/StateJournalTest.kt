@@ -201,6 +201,18 @@ class StateJournalTest : FunSpec({
         }
     }
 
+    test("a request whose change could not be written before the journal stopped is never answered") {
+        val store = RecordingStore()
+        store.beforeWrite = { throw java.sql.SQLException("disk full") }
+        val answered = java.util.concurrent.CountDownLatch(1)
+        StateJournal(store, waitForCommit = true).use { journal ->
+            journal.append(put("order"))
+            journal.whenCommitted(journal.mark()) { answered.countDown() }
+        } // close() gives the failing store a few retries, then stops
+        answered.await(200, TimeUnit.MILLISECONDS) shouldBe false
+        store.events shouldBe emptyList()
+    }
+
     test("a failed flush has the commits it should have put on the disk written again, then answers them") {
         val store = RecordingStore()
         val failures = java.util.concurrent.atomic.AtomicInteger(1)
