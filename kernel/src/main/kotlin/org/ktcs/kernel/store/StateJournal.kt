@@ -48,6 +48,7 @@ class StateJournal(
     // them written again (rewriteUnflushed) before it is retried.
     private val unflushed = ArrayDeque<Pair<Long, Collection<StoreChange>>>()
     private var rewriteUnflushed = false
+
     @Volatile
     private var running = true
     private var writerStopped = false
