@@ -19,7 +19,8 @@ import kotlin.concurrent.withLock
  * changes (a vehicle reached a point, an order was assigned) become durable with the next flush. A write-ahead log is
  * replayed in order, so a power cut loses at most the unflushed commits at its end, never a change a client was told
  * is committed; `kill -9` loses none of them. A flush that fails has the commits it should have flushed written again
- * (the operating system may have dropped them) before it is tried again.
+ * (the operating system may have dropped them) before it is tried again. A store whose commit is on the disk once it
+ * returns (PostgreSQL) has no flusher: the writer answers the requests it committed itself.
  *
  * A group commit gathers what is on its way: a client's [mark] wakes the writer through [later] (the kernel context's
  * queue), that is after the requests already queued in the kernel made their changes and marked them too; with one
@@ -62,8 +63,11 @@ class StateJournal(
     private val waiting = PriorityQueue<Waiter>(compareBy { it.mark })
     private var notificationsWritten = 0L
     private val counts = Counts()
+
+    // A store whose commits are on the disk already (PostgreSQL): the writer answers, without a hand-off to a flusher.
+    private val answerWhenCommitted = waitForCommit && store.commitsFlushed
     private val writer = thread(name = "state-store-writer", isDaemon = true) { writeLoop() }
-    private val flusher = if (waitForCommit) {
+    private val flusher = if (waitForCommit && !answerWhenCommitted) {
         thread(name = "state-store-flusher", isDaemon = true) {
             flushLoop()
         }
@@ -144,11 +148,12 @@ class StateJournal(
                 // Stopping with a store that cannot be written: nothing of this batch or after it is answered.
                 if (!written) return
                 committed = upTo
-                if (waitForCommit) {
+                if (waitForCommit && !answerWhenCommitted) {
                     unflushed.addLast(upTo to batch)
                     if (flushDue()) flushable.signal()
                 }
             }
+            if (answerWhenCommitted) answer(upTo)
         }
     }
 

@@ -28,6 +28,7 @@ class StateStore private constructor(
     private val deletes = StoreTable.entries.associateWith {
         connection.prepareStatement("DELETE FROM ${it.sqlName} WHERE name = ?")
     }
+    override val commitsFlushed = writeAheadLog == null
     private var logChannel: FileChannel? = null
     private var logFile: Any? = null
 

@@ -14,6 +14,9 @@ interface StoreWriter : AutoCloseable {
      */
     fun flush()
 
+    /** Whether a commit is on the disk once [write] returns (PostgreSQL, as its server is configured): no [flush]. */
+    val commitsFlushed: Boolean get() = false
+
     /** Deletes the notifications older than the newest [keep] ([newest] is the newest one's number). */
     fun trimNotifications(newest: Long, keep: Int)
 }

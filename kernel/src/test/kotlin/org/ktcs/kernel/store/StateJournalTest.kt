@@ -201,6 +201,17 @@ class StateJournalTest : FunSpec({
         }
     }
 
+    test("with a store whose commits are on the disk already (PostgreSQL) the writer answers after the commit") {
+        val store = RecordingStore(commitsFlushed = true)
+        StateJournal(store, waitForCommit = true).use { journal ->
+            journal.append(put("order"))
+            val mark = journal.mark()
+            runBlocking { withTimeout(5_000) { journal.awaitCommitted(mark) } }
+
+            store.events shouldContainExactly listOf("write order")
+        }
+    }
+
     test("a request whose change could not be written before the journal stopped is never answered") {
         val store = RecordingStore()
         store.beforeWrite = { throw java.sql.SQLException("disk full") }
@@ -242,7 +253,7 @@ class StateJournalTest : FunSpec({
 })
 
 /** Records each write's row names and each flush, in the order they happened. */
-private class RecordingStore : StoreWriter {
+private class RecordingStore(override val commitsFlushed: Boolean = false) : StoreWriter {
     val events: MutableList<String> = java.util.Collections.synchronizedList(mutableListOf())
     val writes: MutableList<List<String>> = java.util.Collections.synchronizedList(mutableListOf())
     private val counted = java.util.concurrent.Semaphore(0)
