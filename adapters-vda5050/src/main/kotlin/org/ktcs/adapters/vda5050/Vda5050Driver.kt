@@ -35,7 +35,7 @@ class Vda5050Driver(
 ) : BasicVehicleDriver(vehicleName, context, properties.maxStepsBase, properties.rechargeOperation) {
     private val log = LoggerFactory.getLogger(Vda5050Driver::class.java)
     private val actions = ActionMapping(properties, context.vehicle().properties)
-    private val topics = VehicleTopics(vehicleName, properties, broker::messages, broker::connections)
+    private val topics = VehicleTopics(vehicleName, properties, broker::messages, broker::subscriptions)
     private var orderCount = 0
     private var order: OrderTracker? = null
     private var connectionState = "UNKNOWN"
