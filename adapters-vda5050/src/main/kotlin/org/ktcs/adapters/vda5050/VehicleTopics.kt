@@ -12,6 +12,8 @@ import org.ktcs.adapters.vda5050.protocol.InstantActions
 import org.ktcs.adapters.vda5050.protocol.MessageValidator
 import org.ktcs.adapters.vda5050.protocol.Order
 import org.ktcs.adapters.vda5050.protocol.State
+import org.ktcs.adapters.vda5050.protocol.StateRead
+import org.ktcs.adapters.vda5050.protocol.StateReader
 import org.ktcs.adapters.vda5050.protocol.Vda
 import org.ktcs.adapters.vda5050.protocol.Vda5050Json
 import org.ktcs.adapters.vda5050.protocol.Visualization
@@ -40,6 +42,9 @@ internal class VehicleTopics(
     // The driver's log category: what a user turns up to watch a vehicle's messages covers these lines too.
     private val log = LoggerFactory.getLogger(Vda5050Driver::class.java)
     private val headerIds = HashMap<String, Long>()
+
+    // State messages repeat most of the last one: what they repeat is not checked and decoded again.
+    private val states = StateReader(properties.validateIncomingMessages)
 
     @Volatile private var lastVisualizationMillis = Long.MIN_VALUE
 
@@ -128,7 +133,12 @@ internal class VehicleTopics(
         decoded.incrementAndGet()
         val bytes = ByteArray(payload.remaining()).also(payload::get)
         return try {
-            if (properties.validateIncomingMessages) {
+            if (kind == IncomingTopic.STATE) {
+                when (val read = states.read(bytes)) {
+                    is StateRead.Invalid -> invalid(kind, read.problems)
+                    is StateRead.Valid -> read.state
+                }
+            } else if (properties.validateIncomingMessages) {
                 when (val checked = MessageValidator.check(kind, bytes)) {
                     is Checked.Invalid -> invalid(kind, checked.problems)
                     is Checked.Valid -> decode(kind, checked.json)
