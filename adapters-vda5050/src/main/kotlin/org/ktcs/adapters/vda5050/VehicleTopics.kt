@@ -21,6 +21,7 @@ import org.slf4j.LoggerFactory
 import java.nio.ByteBuffer
 import java.time.Instant
 import java.time.format.DateTimeFormatter
+import java.util.concurrent.Executor
 import java.util.concurrent.atomic.AtomicLong
 
 /**
@@ -30,7 +31,9 @@ import java.util.concurrent.atomic.AtomicLong
  * [messages], which also sends (the same MQTT client with an external broker; see [Vda5050Broker]). An incoming
  * message is validated against its schema (if `validateIncomingMessages`) and parsed on the link's thread; an invalid
  * or unreadable one is logged with the reason and dropped. Visualization messages within `minVisualizationInterval`
- * of the last one taken are dropped before their payload is read (the link may not even hand them over).
+ * of the last one taken are dropped before their payload is read (the link may not even hand them over). Outgoing
+ * messages are built, encoded and sent by [sending] (kTCS's sending thread: not the kernel's), in the order they were
+ * published.
  */
 internal class VehicleTopics(
     private val vehicleName: String,
@@ -38,10 +41,11 @@ internal class VehicleTopics(
     private val messages: () -> MessageLink,
     private val subscriptions: () -> MessageLink = messages,
     private val millis: () -> Long = System::currentTimeMillis,
+    private val sending: Executor = Executor { it.run() },
 ) {
     // The driver's log category: what a user turns up to watch a vehicle's messages covers these lines too.
     private val log = LoggerFactory.getLogger(Vda5050Driver::class.java)
-    private val headerIds = HashMap<String, Long>()
+    private val headerIds = HashMap<String, Long>() // only on [sending]'s thread, one at a time
 
     // State messages repeat most of the last one: what they repeat is not checked and decoded again.
     private val states = StateReader(properties.validateIncomingMessages)
@@ -100,7 +104,8 @@ internal class VehicleTopics(
         return true
     }
 
-    fun publishOrder(update: OrderUpdate) {
+    /** Publishes [update] as the next order message, encoded and sent by [sending]. */
+    fun publishOrder(update: OrderUpdate) = sending.execute {
         val message = Order(
             nextHeader("order"), timestamp(), Vda.PROTOCOL_VERSION, properties.manufacturer, properties.serialNumber,
             update.orderId, update.orderUpdateId, update.nodes, update.edges,
@@ -109,7 +114,8 @@ internal class VehicleTopics(
         log.debug("vehicle {}: order {} update {}", vehicleName, update.orderId, update.orderUpdateId)
     }
 
-    fun publishInstantActions(list: List<Action>) {
+    /** Publishes [list] as the next instantActions message, encoded and sent by [sending]. */
+    fun publishInstantActions(list: List<Action>) = sending.execute {
         val message = InstantActions(
             nextHeader("instantActions"),
             timestamp(),
