@@ -16,11 +16,9 @@ import java.util.concurrent.RejectedExecutionException
  * when [settings] ask for it. Nothing starts until the first vehicle needs it, so a plant without VDA 5050 vehicles
  * pays nothing for the driver.
  *
- * With the embedded broker, the vehicles' sampled visualization messages and kTCS's orders and instant actions take
- * the [InProcessLink] inside the broker, and the client carries the topics whose every message matters (`connection`,
- * with its retained messages and last wills that reach only a subscriber, `state` and `factsheet`): a hundred vehicles'
- * state messages a second cost the broker and the client less than HiveMQ's hop to the interceptor for every message
- * of every vehicle. With an external broker the client carries everything.
+ * With the embedded broker, the vehicles' messages and kTCS's orders take the [InProcessLink] inside the broker, and
+ * the client carries only the `connection` topics (retained messages and last wills reach only a subscriber); with an
+ * external broker the client carries everything.
  */
 class Vda5050Broker(private val settings: BrokerSettings) : AutoCloseable {
     private val log = LoggerFactory.getLogger(Vda5050Broker::class.java)
@@ -55,10 +53,10 @@ class Vda5050Broker(private val settings: BrokerSettings) : AutoCloseable {
     @Synchronized
     fun link(): MqttLink = link ?: start()
 
-    /** What carries the vehicle topics whose every message matters: connection, state, factsheet. */
-    fun subscriptions(): MessageLink = link()
+    /** What carries the vehicles' connection messages. */
+    fun connections(): MessageLink = link()
 
-    /** What carries the sampled vehicle topics (visualization), and orders and instant actions. */
+    /** What carries every other vehicle message, and orders and instant actions. */
     @Synchronized
     fun messages(): MessageLink {
         val client = link()

@@ -36,7 +36,7 @@ class Vda5050Driver(
     private val log = LoggerFactory.getLogger(Vda5050Driver::class.java)
     private val actions = ActionMapping(properties, context.vehicle().properties)
     private val topics =
-        VehicleTopics(vehicleName, properties, broker::messages, broker::subscriptions, sending = broker.sending)
+        VehicleTopics(vehicleName, properties, broker::messages, broker::connections, sending = broker.sending)
     private var orderCount = 0
     private var order: OrderTracker? = null
     private var connectionState = "UNKNOWN"

@@ -26,20 +26,18 @@ import java.util.concurrent.atomic.AtomicLong
 
 /**
  * One VDA 5050 vehicle's topics under its `topicPrefix`: what the master control publishes (orders and instant
- * actions, with their header ids and timestamps) and what it listens to. The topics whose every message matters
- * (`connection`, `state`, `factsheet`) come through [subscriptions], the sampled `visualization` topic through
- * [messages], which also sends (the same MQTT client with an external broker; see [Vda5050Broker]). An incoming
- * message is validated against its schema (if `validateIncomingMessages`) and parsed on the link's thread; an invalid
- * or unreadable one is logged with the reason and dropped. Visualization messages within `minVisualizationInterval`
- * of the last one taken are dropped before their payload is read (the link may not even hand them over). Outgoing
- * messages are built, encoded and sent by [sending] (kTCS's sending thread: not the kernel's), in the order they were
- * published.
+ * actions, with their header ids and timestamps) and what it listens to. The `connection` topic comes through
+ * [connections], everything else through [messages] (the same MQTT client with an external broker; see
+ * [Vda5050Broker]). An incoming message is validated against its schema (if `validateIncomingMessages`) and parsed on
+ * the link's thread; an invalid or unreadable one is logged with the reason and dropped. Visualization messages within
+ * `minVisualizationInterval` of the last one taken are dropped before their payload is read. Outgoing messages are
+ * built, encoded and sent by [sending] (kTCS's sending thread, not the kernel's), in the order they were published.
  */
 internal class VehicleTopics(
     private val vehicleName: String,
     private val properties: Vda5050Properties,
     private val messages: () -> MessageLink,
-    private val subscriptions: () -> MessageLink = messages,
+    private val connections: () -> MessageLink = messages,
     private val millis: () -> Long = System::currentTimeMillis,
     private val sending: Executor = Executor { it.run() },
 ) {
@@ -60,35 +58,28 @@ internal class VehicleTopics(
      * [Connection], [State], [Visualization] or factsheet [JsonObject].
      */
     fun listen(received: (Any) -> Unit) {
-        val subscriber = subscriptions()
+        val connection = properties.connection
+        connections().listen(properties.topic(connection), connection.qos.coerceAtLeast(1)) { payload ->
+            parsed(IncomingTopic.CONNECTION, payload)?.let(received)
+        }
+        val link = messages()
         listOf(
-            properties.connection to IncomingTopic.CONNECTION,
             properties.state to IncomingTopic.STATE,
+            properties.visualization to IncomingTopic.VISUALIZATION,
             properties.factsheet to IncomingTopic.FACTSHEET,
         ).forEach { (topic, kind) ->
-            // At least once from the broker to kTCS: a vehicle that publishes at QoS 1 loses nothing on the way.
-            subscriber.listen(properties.topic(topic), topic.qos.coerceAtLeast(1)) { payload ->
-                parsed(kind, payload)?.let(received)
+            link.listen(properties.topic(topic), topic.qos) { payload ->
+                if (kind != IncomingTopic.VISUALIZATION || visualizationDue()) parsed(kind, payload)?.let(received)
             }
-        }
-        val visualization = properties.visualization
-        messages().sample(
-            properties.topic(visualization),
-            visualization.qos,
-            properties.minVisualizationIntervalMillis,
-        ) { payload ->
-            val due = visualizationDue()
-            if (due) parsed(IncomingTopic.VISUALIZATION, payload)?.let(received)
-            due
         }
         log.debug("vehicle {} listens on {}/#", vehicleName, properties.topicPrefix)
     }
 
     fun stopListening() {
-        val subscriber = subscriptions()
-        listOf(properties.connection, properties.state, properties.factsheet)
-            .forEach { subscriber.stopListening(properties.topic(it)) }
-        messages().stopListening(properties.topic(properties.visualization))
+        connections().stopListening(properties.topic(properties.connection))
+        val link = messages()
+        listOf(properties.state, properties.visualization, properties.factsheet)
+            .forEach { link.stopListening(properties.topic(it)) }
     }
 
     // One link thread per vehicle at a time for an external broker, but the in-process link may use several.

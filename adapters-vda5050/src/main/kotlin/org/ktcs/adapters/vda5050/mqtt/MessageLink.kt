@@ -13,15 +13,6 @@ interface MessageLink {
      */
     fun listen(topic: String, qos: Int, handler: (ByteBuffer) -> Unit)
 
-    /**
-     * Like [listen], for a topic whose messages [handler] samples: it returns whether it took the message. After one it
-     * took, the link may drop the topic's messages for [intervalMillis] without handing them over (the handler would
-     * decline them anyway), and it may hand over a message the handler declines. Not for a topic whose every message
-     * matters.
-     */
-    fun sample(topic: String, qos: Int, intervalMillis: Long, handler: (ByteBuffer) -> Boolean) =
-        listen(topic, qos) { handler(it) }
-
     fun stopListening(topic: String)
 
     fun send(topic: String, payload: ByteArray, qos: Int)

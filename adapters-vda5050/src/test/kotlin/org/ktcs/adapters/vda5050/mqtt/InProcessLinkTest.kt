@@ -76,7 +76,7 @@ class InProcessLinkTest : FunSpec({
     test("a vehicle that drops out: its last will on the connection topic reaches the driver") {
         val relay = TcpRelay(endpoint.port)
         val heard = Collections.synchronizedList(mutableListOf<String>())
-        broker.subscriptions().listen("v/3/connection", 1) { heard += text(it) }
+        broker.connections().listen("v/3/connection", 1) { heard += text(it) }
         val vehicle = MqttLink(
             "vehicle-3",
             BrokerEndpoint("127.0.0.1", relay.port, tls = false),
