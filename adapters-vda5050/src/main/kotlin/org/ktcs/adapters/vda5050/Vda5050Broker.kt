@@ -26,6 +26,8 @@ class Vda5050Broker(private val settings: BrokerSettings) : AutoCloseable {
     private var inProcess: InProcessLink? = null
     private var link: MqttLink? = null
 
+    @Volatile private var closed = false
+
     private val sender = lazy {
         Executors.newSingleThreadExecutor { Thread(it, SENDING_THREAD).apply { isDaemon = true } }
     }
@@ -36,12 +38,18 @@ class Vda5050Broker(private val settings: BrokerSettings) : AutoCloseable {
      * nothing. A message handed over after [close] is dropped.
      */
     val sending = Executor { task ->
-        try {
-            sender.value.execute { sendGuarded(task) }
-        } catch (_: RejectedExecutionException) {
-            log.debug("kTCS's MQTT side is closed: a message to a vehicle was not sent")
+        if (closed) {
+            notSent()
+        } else {
+            try {
+                sender.value.execute { sendGuarded(task) }
+            } catch (_: RejectedExecutionException) {
+                notSent()
+            }
         }
     }
+
+    private fun notSent() = log.debug("kTCS's MQTT side is closed: a message to a vehicle was not sent")
 
     private fun sendGuarded(task: Runnable) = try {
         task.run()
@@ -81,6 +89,7 @@ class Vda5050Broker(private val settings: BrokerSettings) : AutoCloseable {
 
     @Synchronized
     override fun close() {
+        closed = true
         if (sender.isInitialized()) sender.value.shutdown()
         link?.close()
         link = null
