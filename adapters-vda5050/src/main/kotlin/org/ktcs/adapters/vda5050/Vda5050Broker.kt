@@ -7,6 +7,9 @@ import org.ktcs.adapters.vda5050.mqtt.MessageLink
 import org.ktcs.adapters.vda5050.mqtt.MqttLink
 import org.slf4j.LoggerFactory
 import java.util.UUID
+import java.util.concurrent.Executor
+import java.util.concurrent.Executors
+import java.util.concurrent.RejectedExecutionException
 
 /**
  * kTCS's side of the MQTT traffic: one client connection shared by every VDA 5050 vehicle, and the embedded broker
@@ -22,6 +25,37 @@ class Vda5050Broker(private val settings: BrokerSettings) : AutoCloseable {
     private var embedded: EmbeddedBroker? = null
     private var inProcess: InProcessLink? = null
     private var link: MqttLink? = null
+
+    @Volatile private var closed = false
+
+    private val sender = lazy {
+        Executors.newSingleThreadExecutor { Thread(it, SENDING_THREAD).apply { isDaemon = true } }
+    }
+
+    /**
+     * Where the drivers' orders and instant actions are built, encoded and published: one thread for every vehicle, in
+     * the order the drivers handed them over, so that the JSON and the broker's publishing cost the kernel thread
+     * nothing. A message handed over after [close] is dropped.
+     */
+    val sending = Executor { task ->
+        if (closed) {
+            notSent()
+        } else {
+            try {
+                sender.value.execute { sendGuarded(task) }
+            } catch (_: RejectedExecutionException) {
+                notSent()
+            }
+        }
+    }
+
+    private fun notSent() = log.debug("kTCS's MQTT side is closed: a message to a vehicle was not sent")
+
+    private fun sendGuarded(task: Runnable) = try {
+        task.run()
+    } catch (error: RuntimeException) {
+        log.warn("could not send a message to a vehicle: {}", error.toString())
+    }
 
     /** The shared client, connecting (and starting the embedded broker) on first use. */
     @Synchronized
@@ -55,10 +89,17 @@ class Vda5050Broker(private val settings: BrokerSettings) : AutoCloseable {
 
     @Synchronized
     override fun close() {
+        closed = true
+        if (sender.isInitialized()) sender.value.shutdown()
         link?.close()
         link = null
         inProcess = null
         embedded?.close()
         embedded = null
+    }
+
+    companion object {
+        /** The name of the thread that sends the vehicles' orders and instant actions. */
+        const val SENDING_THREAD = "vda5050-send"
     }
 }

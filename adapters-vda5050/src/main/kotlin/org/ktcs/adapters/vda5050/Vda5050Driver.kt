@@ -35,12 +35,17 @@ class Vda5050Driver(
 ) : BasicVehicleDriver(vehicleName, context, properties.maxStepsBase, properties.rechargeOperation) {
     private val log = LoggerFactory.getLogger(Vda5050Driver::class.java)
     private val actions = ActionMapping(properties, context.vehicle().properties)
-    private val topics = VehicleTopics(vehicleName, properties, broker::messages, broker::connections)
+    private val topics =
+        VehicleTopics(vehicleName, properties, broker::messages, broker::connections, sending = broker.sending)
     private var orderCount = 0
     private var order: OrderTracker? = null
     private var connectionState = "UNKNOWN"
-    private var lastState: State? = null
-    private var lastStateAt: Instant? = null
+    private val stateFilter = StateFilter()
+
+    // Set on the link's thread for every state message, also those that are not worth a kernel task.
+    @Volatile private var lastState: State? = null
+
+    @Volatile private var lastStateAt: Instant? = null
     private var factsheet: JsonObject? = null
     private var pendingCancel: Action? = null
     private var cancelSentAt = 0L
@@ -52,6 +57,7 @@ class Vda5050Driver(
 
     override fun onEnabled() {
         reports.reset()
+        stateFilter.reset()
         listen()
     }
 
@@ -104,6 +110,7 @@ class Vda5050Driver(
         val cancel = Action(Vda.CANCEL_ORDER, actions.newId(), "NONE")
         pendingCancel = cancel
         cancelSentAt = System.currentTimeMillis()
+        stateFilter.needEvery(true)
         sendInstantActions(listOf(cancel))
     }
 
@@ -188,20 +195,34 @@ class Vda5050Driver(
 
     private fun publishOrder(update: OrderUpdate) {
         orderSentAt = System.currentTimeMillis()
+        stateFilter.needEvery(true)
         topics.publishOrder(update)
     }
 
     private fun sendInstantActions(list: List<Action>) = topics.publishInstantActions(list)
 
-    /** On the link's thread, a validated and parsed message: handled in the kernel context. */
+    /**
+     * On the link's thread, a validated and parsed message: handled in the kernel context, a state message only if it
+     * is worth it ([StateFilter]).
+     */
     private fun received(message: Any) {
         when (message) {
             is State -> {
                 message.agvPosition?.let { reports.pose(it.x, it.y, it.theta) }
-                inKernel { onState(message) }
+                lastState = message
+                lastStateAt = context.clock.now()
+                if (stateFilter.worthATask(message)) {
+                    inKernel {
+                        onState(message)
+                        stateFilter.needEvery(order?.unacknowledged != null || pendingCancel != null)
+                    }
+                }
             }
 
-            is Connection -> inKernel { onConnection(message) }
+            is Connection -> {
+                stateFilter.reset() // the state message after a connection change goes to the kernel
+                inKernel { onConnection(message) }
+            }
 
             is Visualization -> message.agvPosition?.let { reports.pose(it.x, it.y, it.theta) }
 
@@ -239,8 +260,6 @@ class Vda5050Driver(
     }
 
     private fun onState(state: State) {
-        lastState = state
-        lastStateAt = context.clock.now()
         if (connectionState == "UNKNOWN") connectionState = Vda.ONLINE
         reports.fromState(state)
         // The MQTT client may run the connection and state topics' callbacks on different threads: a state message sent

@@ -12,6 +12,8 @@ import org.ktcs.adapters.vda5050.protocol.InstantActions
 import org.ktcs.adapters.vda5050.protocol.MessageValidator
 import org.ktcs.adapters.vda5050.protocol.Order
 import org.ktcs.adapters.vda5050.protocol.State
+import org.ktcs.adapters.vda5050.protocol.StateRead
+import org.ktcs.adapters.vda5050.protocol.StateReader
 import org.ktcs.adapters.vda5050.protocol.Vda
 import org.ktcs.adapters.vda5050.protocol.Vda5050Json
 import org.ktcs.adapters.vda5050.protocol.Visualization
@@ -19,6 +21,7 @@ import org.slf4j.LoggerFactory
 import java.nio.ByteBuffer
 import java.time.Instant
 import java.time.format.DateTimeFormatter
+import java.util.concurrent.Executor
 import java.util.concurrent.atomic.AtomicLong
 
 /**
@@ -27,7 +30,8 @@ import java.util.concurrent.atomic.AtomicLong
  * [connections], everything else through [messages] (the same MQTT client with an external broker; see
  * [Vda5050Broker]). An incoming message is validated against its schema (if `validateIncomingMessages`) and parsed on
  * the link's thread; an invalid or unreadable one is logged with the reason and dropped. Visualization messages within
- * `minVisualizationInterval` of the last one taken are dropped before their payload is read.
+ * `minVisualizationInterval` of the last one taken are dropped before their payload is read. Outgoing messages are
+ * built, encoded and sent by [sending] (kTCS's sending thread, not the kernel's), in the order they were published.
  */
 internal class VehicleTopics(
     private val vehicleName: String,
@@ -35,10 +39,14 @@ internal class VehicleTopics(
     private val messages: () -> MessageLink,
     private val connections: () -> MessageLink = messages,
     private val millis: () -> Long = System::currentTimeMillis,
+    private val sending: Executor = Executor { it.run() },
 ) {
     // The driver's log category: what a user turns up to watch a vehicle's messages covers these lines too.
     private val log = LoggerFactory.getLogger(Vda5050Driver::class.java)
-    private val headerIds = HashMap<String, Long>()
+    private val headerIds = HashMap<String, Long>() // only on [sending]'s thread, one at a time
+
+    // State messages repeat most of the last one: what they repeat is not checked and decoded again.
+    private val states = StateReader(properties.validateIncomingMessages)
 
     @Volatile private var lastVisualizationMillis = Long.MIN_VALUE
 
@@ -87,7 +95,8 @@ internal class VehicleTopics(
         return true
     }
 
-    fun publishOrder(update: OrderUpdate) {
+    /** Publishes [update] as the next order message, encoded and sent by [sending]. */
+    fun publishOrder(update: OrderUpdate) = sending.execute {
         val message = Order(
             nextHeader("order"), timestamp(), Vda.PROTOCOL_VERSION, properties.manufacturer, properties.serialNumber,
             update.orderId, update.orderUpdateId, update.nodes, update.edges,
@@ -96,7 +105,8 @@ internal class VehicleTopics(
         log.debug("vehicle {}: order {} update {}", vehicleName, update.orderId, update.orderUpdateId)
     }
 
-    fun publishInstantActions(list: List<Action>) {
+    /** Publishes [list] as the next instantActions message, encoded and sent by [sending]. */
+    fun publishInstantActions(list: List<Action>) = sending.execute {
         val message = InstantActions(
             nextHeader("instantActions"),
             timestamp(),
@@ -120,7 +130,12 @@ internal class VehicleTopics(
         decoded.incrementAndGet()
         val bytes = ByteArray(payload.remaining()).also(payload::get)
         return try {
-            if (properties.validateIncomingMessages) {
+            if (kind == IncomingTopic.STATE) {
+                when (val read = states.read(bytes)) {
+                    is StateRead.Invalid -> invalid(kind, read.problems)
+                    is StateRead.Valid -> read.state
+                }
+            } else if (properties.validateIncomingMessages) {
                 when (val checked = MessageValidator.check(kind, bytes)) {
                     is Checked.Invalid -> invalid(kind, checked.problems)
                     is Checked.Valid -> decode(kind, checked.json)

@@ -42,14 +42,22 @@ object MessageValidator {
     /** [payload] (UTF-8 JSON) read and checked as a message on [topic]. */
     fun check(topic: IncomingTopic, payload: ByteArray): Checked {
         val tree = try {
-            mapper.readTree(payload)
+            read(payload)
         } catch (error: JacksonException) {
-            return Checked.Invalid(listOf("not JSON: ${error.originalMessage}"))
+            return notJson(error)
         }
-        val problems = schema(topic).validate(tree).map { error ->
-            "${error.instanceLocation.toString().ifEmpty { "$" }}: ${error.message}"
-        }
+        val problems = schemaProblems(topic, tree)
         return if (problems.isEmpty()) Checked.Valid(tree.toKotlinx()) else Checked.Invalid(problems)
+    }
+
+    /** [payload] (UTF-8 JSON) as a tree; throws [JacksonException] if it is not JSON. */
+    internal fun read(payload: ByteArray): JsonNode = mapper.readTree(payload)
+
+    internal fun notJson(error: JacksonException) = Checked.Invalid(listOf("not JSON: ${error.originalMessage}"))
+
+    /** What is wrong with [tree] as a message on [topic]; empty when it is valid. */
+    internal fun schemaProblems(topic: IncomingTopic, tree: JsonNode): List<String> = schema(topic).validate(tree).map {
+        "${it.instanceLocation.toString().ifEmpty { "$" }}: ${it.message}"
     }
 
     /** What is wrong with [json] as a message on [topic]; empty when it is valid. */
@@ -60,7 +68,8 @@ object MessageValidator {
         registry.getSchema(SchemaLocation.of("classpath:$SCHEMAS/${it.schemaFile}"))
     }
 
-    private fun JsonNode.toKotlinx(): JsonElement = when {
+    /** [this] tree as kotlinx's, which the driver decodes its messages from. */
+    internal fun JsonNode.toKotlinx(): JsonElement = when {
         isObject -> JsonObject(properties().associate { (key, value) -> key to value.toKotlinx() })
         isArray -> JsonArray(values().map { it.toKotlinx() })
         isString -> JsonPrimitive(stringValue())

@@ -1,5 +1,6 @@
 package org.ktcs.adapters.vda5050.bench
 
+import org.ktcs.adapters.vda5050.Vda5050Broker
 import org.ktcs.kernel.bench.ProcStats
 
 /**
@@ -31,6 +32,8 @@ internal class ThreadCpu(private val stats: ProcStats) {
             BROKER.any { name.startsWith(it) } -> BROKER_GROUP
 
             CLIENT.any { name.startsWith(it) } -> "MQTT client + message checks"
+
+            name == Vda5050Broker.SENDING_THREAD -> "orders out (encoding, publishing)"
 
             name.startsWith("DefaultDispatch") || name.startsWith("ktor") -> "web API"
 

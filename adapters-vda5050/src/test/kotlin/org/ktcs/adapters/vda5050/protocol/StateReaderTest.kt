@@ -1,0 +1,55 @@
+package org.ktcs.adapters.vda5050.protocol
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldHaveSize
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldStartWith
+import io.kotest.matchers.types.shouldBeInstanceOf
+import io.kotest.matchers.types.shouldBeSameInstanceAs
+import io.kotest.matchers.types.shouldNotBeSameInstanceAs
+
+private fun state(headerId: Long, nodes: List<NodeState>, battery: Double = 80.0) = State(
+    headerId, "2026-11-24T08:00:0${headerId % 10}Z", Vda.PROTOCOL_VERSION, "kTCS", "SIM-1", "o-1", 0,
+    "Point-0001", 0, nodes, emptyList(), true, listOf(ActionState("a-1", "RUNNING", "pick")),
+    BatteryState(battery, false), "AUTOMATIC", emptyList(), SafetyState("NONE", false),
+)
+
+private fun json(state: State) = Vda5050Json.encodeToString(State.serializer(), state).toByteArray()
+
+private val route = listOf(NodeState("Point-0002", 2, true), NodeState("Point-0003", 4, false))
+
+/**
+ * A vehicle repeats its state every second, its node and edge states mostly unchanged: an array the vehicle's last
+ * valid message had is neither checked nor decoded again, and everything else still is.
+ */
+class StateReaderTest : FunSpec({
+    test("a repeated array is taken from the last message; the message reads as a whole") {
+        val reader = StateReader(validate = true)
+        val first = reader.read(json(state(1, route))).shouldBeInstanceOf<StateRead.Valid>().state
+        val second = reader.read(json(state(2, route, battery = 79.5))).shouldBeInstanceOf<StateRead.Valid>().state
+        second shouldBe state(2, route, battery = 79.5)
+        second.nodeStates shouldBeSameInstanceAs first.nodeStates
+        second.actionStates shouldBeSameInstanceAs first.actionStates
+        val third = reader.read(json(state(3, route.drop(1)))).shouldBeInstanceOf<StateRead.Valid>().state
+        third shouldBe state(3, route.drop(1))
+        third.nodeStates shouldNotBeSameInstanceAs first.nodeStates
+    }
+
+    test("what changed is checked, also next to repeated arrays; an invalid message is not remembered") {
+        val reader = StateReader(validate = true)
+        reader.read(json(state(1, route))).shouldBeInstanceOf<StateRead.Valid>()
+        val badNode = String(json(state(2, route))).replace("\"sequenceId\":4", "\"sequenceId\":\"four\"")
+        reader.read(badNode.toByteArray()).shouldBeInstanceOf<StateRead.Invalid>().problems.single() shouldStartWith
+            "/nodeStates/1/sequenceId: "
+        // The same broken array again: still checked, as no valid message had it.
+        reader.read(badNode.replace("\"headerId\":2", "\"headerId\":3").toByteArray())
+            .shouldBeInstanceOf<StateRead.Invalid>().problems shouldHaveSize 1
+        val badMode = String(json(state(4, route))).replace("\"AUTOMATIC\"", "\"ASLEEP\"")
+        reader.read(badMode.toByteArray()).shouldBeInstanceOf<StateRead.Invalid>().problems.single() shouldStartWith
+            "/operatingMode: "
+        reader.read(
+            "{\"headerId\":".toByteArray(),
+        ).shouldBeInstanceOf<StateRead.Invalid>().problems.single() shouldStartWith
+            "not JSON: "
+    }
+})
