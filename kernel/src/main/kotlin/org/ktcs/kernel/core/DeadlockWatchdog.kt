@@ -18,12 +18,15 @@ class DeadlockWatchdog(private val kernel: KernelCore, private val state: Kernel
     private var next: Cancellable? = null
     private val stuck = StuckStates()
     private val idleBlockers = IdleBlockers(kernel, state)
+    private val retreating = Retreats(kernel)
 
     override val detected: Int get() = stuck.detected
 
     override val resolved: Int get() = stuck.resolved
 
     override val idleVehiclesMoved: Int get() = idleBlockers.moved
+
+    override val retreats: Int get() = retreating.sent
 
     fun start() {
         val interval = kernel.options.deadlockCheckIntervalMillis
@@ -44,6 +47,9 @@ class DeadlockWatchdog(private val kernel: KernelCore, private val state: Kernel
 
     /** Finds and handles the current deadlocks. */
     fun check() {
+        // A fleet held back by deadlock avoidance gets moving by a retreat first: planned avoidance, not a deadlock
+        // found (a cycle it breaks is not counted; one it does not break is found at the next check).
+        if (retreating.check()) return
         // Asks the scheduler's interface only, so a replaced scheduler keeps the watchdog working.
         val graph = WaitForGraph(kernel.scheduler.waitsFor())
         val deadlocks = DeadlockDetector.detect(graph)

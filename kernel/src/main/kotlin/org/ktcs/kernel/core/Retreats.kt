@@ -1,0 +1,45 @@
+package org.ktcs.kernel.core
+
+import org.ktcs.kernel.scheduling.DefaultScheduler
+import org.slf4j.LoggerFactory
+
+/**
+ * Gets a fleet moving that deadlock avoidance holds back without a deadlock: the vehicle held back longest that can
+ * drive into a free park point over free points now is sent on through it (a *retreat*), which frees its point for
+ * the vehicles behind it. One retreat per watchdog check, and a vehicle is not sent again for [COOLDOWN_CHECKS]
+ * checks, so retreats that do not help cannot keep the fleet circling through park bays.
+ */
+internal class Retreats(private val kernel: KernelCore) {
+    private val log = LoggerFactory.getLogger(Retreats::class.java)
+    private val lastSent = HashMap<String, Long>()
+    private var checks = 0L
+
+    /** How many retreats were sent. */
+    var sent = 0
+        private set
+
+    /** Sends one retreat if a vehicle is held back and can retreat; returns whether it did. */
+    fun check(): Boolean {
+        val scheduler = kernel.scheduler as? DefaultScheduler ?: return false
+        checks++
+        scheduler.retryOverdue()
+        if (lastSent.size > 64) lastSent.values.removeIf { checks - it >= COOLDOWN_CHECKS }
+        val candidates = scheduler.retreats()
+        if (candidates.isEmpty()) return false
+        val allocations = scheduler.allocations()
+        for ((vehicle, park) in candidates) {
+            if (lastSent[vehicle]?.let { checks - it < COOLDOWN_CHECKS } == true) continue
+            val occupied = allocations.filterKeys { it != vehicle }.values.flatMapTo(HashSet()) { it }
+            if (!kernel.retreat(vehicle, park, occupied)) continue
+            lastSent[vehicle] = checks
+            sent++
+            log.info("traffic: vehicle {} held back, sent on through park point {}", vehicle, park)
+            return true
+        }
+        return false
+    }
+
+    private companion object {
+        const val COOLDOWN_CHECKS = 60L
+    }
+}
