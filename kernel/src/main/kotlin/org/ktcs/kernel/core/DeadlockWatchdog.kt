@@ -62,10 +62,7 @@ class DeadlockWatchdog(private val kernel: KernelCore, private val state: Kernel
             val verdict = stuck.observe(deadlock.vehicles, held)
             if (verdict.isNew) report(deadlock)
             if (!verdict.resolveNow) return@forEach
-            if (DeadlockDetector.resolutions(deadlock, graph).any {
-                    kernel.reroute(it.vehicle, it.resourcesToAvoid)
-                }
-            ) {
+            if (breakDeadlock(deadlock, graph, again = !verdict.isNew)) {
                 stuck.rerouted(deadlock.vehicles)
                 log.info("deadlock: rerouted a vehicle to break it: vehicles={}", deadlock.vehicles)
             } else if (verdict.isNew) {
@@ -73,6 +70,15 @@ class DeadlockWatchdog(private val kernel: KernelCore, private val state: Kernel
             }
         }
         idleBlockers.check(graph)
+    }
+
+    // Routes one vehicle of [deadlock] around what it waits for, else sends one off the lanes through a free park
+    // point (a retreat); a knot that came back after that ([again]) gets the retreat first, since routing around
+    // it did not last.
+    private fun breakDeadlock(deadlock: Deadlock, graph: WaitForGraph, again: Boolean): Boolean {
+        if (again && retreating.breakCycle(deadlock.vehicles)) return true
+        return DeadlockDetector.resolutions(deadlock, graph).any { kernel.reroute(it.vehicle, it.resourcesToAvoid) } ||
+            retreating.breakCycle(deadlock.vehicles)
     }
 
     private fun report(deadlock: Deadlock) {

@@ -6,8 +6,9 @@ import org.slf4j.LoggerFactory
 /**
  * Gets a fleet moving that deadlock avoidance holds back without a deadlock: the vehicle held back longest that can
  * drive into a free park point over free points now is sent on through it (a *retreat*), which frees its point for
- * the vehicles behind it. One retreat per watchdog check, and a vehicle is not sent again for [COOLDOWN_CHECKS]
- * checks, so retreats that do not help cannot keep the fleet circling through park bays.
+ * the vehicles behind it. One such retreat per watchdog check, and a vehicle is not sent again for [COOLDOWN_CHECKS]
+ * checks, so retreats that do not help cannot keep the fleet circling through park bays. The watchdog also breaks a
+ * deadlock by a retreat ([breakCycle]) where routing around it does not, or did not last.
  */
 internal class Retreats(private val kernel: KernelCore) {
     private val log = LoggerFactory.getLogger(Retreats::class.java)
@@ -34,6 +35,22 @@ internal class Retreats(private val kernel: KernelCore) {
             lastSent[vehicle] = checks
             sent++
             log.info("traffic: vehicle {} held back, sent on through park point {}", vehicle, park)
+            return true
+        }
+        return false
+    }
+
+    /** Sends one vehicle of a deadlock that no reroute breaks on through a free park point it reaches now. */
+    fun breakCycle(vehicles: List<String>): Boolean {
+        val scheduler = kernel.scheduler as? DefaultScheduler ?: return false
+        val allocations = scheduler.allocations()
+        for (vehicle in vehicles) {
+            val park = scheduler.retreatPoint(vehicle) ?: continue
+            val occupied = allocations.filterKeys { it != vehicle }.values.flatMapTo(HashSet()) { it }
+            if (!kernel.retreat(vehicle, park, occupied)) continue
+            lastSent[vehicle] = checks
+            sent++
+            log.info("traffic: vehicle {} of a deadlock sent on through park point {}", vehicle, park)
             return true
         }
         return false

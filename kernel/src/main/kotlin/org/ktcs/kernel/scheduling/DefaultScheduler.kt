@@ -224,6 +224,9 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
             .mapNotNull { request -> parks.retreatPoint(request.client.name)?.let { request.client.name to it } }
     }
 
+    /** The nearest free park point [client] reaches now over points nobody holds, or null. */
+    fun retreatPoint(client: String): String? = parks.retreatPoint(client)
+
     /**
      * Retries the grants held back for longer than the park test's patience, which the local rule alone decides now
      * (called by the watchdog: nothing else may change while the fleet stands).
