@@ -28,32 +28,28 @@ internal class Retreats(private val kernel: KernelCore) {
         val candidates = scheduler.retreats()
         if (candidates.isEmpty()) return false
         val allocations = scheduler.allocations()
-        for ((vehicle, park) in candidates) {
-            if (lastSent[vehicle]?.let { checks - it < COOLDOWN_CHECKS } == true) continue
-            val occupied = allocations.filterKeys { it != vehicle }.values.flatMapTo(HashSet()) { it }
-            if (!kernel.retreat(vehicle, park, occupied)) continue
-            lastSent[vehicle] = checks
-            sent++
-            log.info("traffic: vehicle {} held back, sent on through park point {}", vehicle, park)
-            return true
+        return candidates.any { (vehicle, park) ->
+            val coolingDown = lastSent[vehicle]?.let { checks - it < COOLDOWN_CHECKS } == true
+            !coolingDown && send(vehicle, park, allocations, "held back")
         }
-        return false
     }
 
     /** Sends one vehicle of a deadlock that no reroute breaks on through a free park point it reaches now. */
     fun breakCycle(vehicles: List<String>): Boolean {
         val scheduler = kernel.scheduler as? DefaultScheduler ?: return false
         val allocations = scheduler.allocations()
-        for (vehicle in vehicles) {
-            val park = scheduler.retreatPoint(vehicle) ?: continue
-            val occupied = allocations.filterKeys { it != vehicle }.values.flatMapTo(HashSet()) { it }
-            if (!kernel.retreat(vehicle, park, occupied)) continue
-            lastSent[vehicle] = checks
-            sent++
-            log.info("traffic: vehicle {} of a deadlock sent on through park point {}", vehicle, park)
-            return true
+        return vehicles.any { vehicle ->
+            scheduler.retreatPoint(vehicle)?.let { send(vehicle, it, allocations, "of a deadlock") } == true
         }
-        return false
+    }
+
+    private fun send(vehicle: String, park: String, allocations: Map<String, Set<String>>, why: String): Boolean {
+        val occupied = allocations.filterKeys { it != vehicle }.values.flatMapTo(HashSet()) { it }
+        if (!kernel.retreat(vehicle, park, occupied)) return false
+        lastSent[vehicle] = checks
+        sent++
+        log.info("traffic: vehicle {} {}, sent on through park point {}", vehicle, why, park)
+        return true
     }
 
     private companion object {

@@ -1,8 +1,6 @@
 package org.ktcs.kernel.scheduling
 
 import io.kotest.core.spec.style.FunSpec
-import io.kotest.matchers.collections.shouldBeEmpty
-import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.shouldBe
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.PointType
@@ -66,25 +64,23 @@ class ParkSafetyTest : FunSpec({
         safety.retreatPoint(listOf(va, safety.standing("vb", "b")), va) shouldBe null
     }
 
-    test("the scheduler holds back a grant the local rule allows while it would leave vehicles unable to park") {
-        val f = SchedulerFixture(loop)
-        val (va, vb, vd, ve) = listOf("va" to "a", "vb" to "b", "vd" to "P", "ve" to "e").map { (name, point) ->
-            f.client(name).also { f.scheduler.allocateNow(it, setOf(point)) }
-        }
-        f.scheduler.claim(va, listOf(setOf("a-b", "b")))
-        f.scheduler.claim(vb, listOf(setOf("b-c", "c")))
-        f.scheduler.claim(vd, listOf(setOf("P-d", "d"), setOf("d-a", "a")))
-        f.scheduler.claim(ve, listOf(setOf("e-c", "c"), setOf("c-P", "P")))
-        f.allocate(vd, "P-d", "d")
+    test("a grant is refused while it would leave the vehicles unable to park, and allowed once it would not") {
+        // va on a, vb on b, vd has driven out of the bay onto d and still covers P; ve asks to enter the loop at c.
+        val holdings = mutableMapOf("va" to setOf("a"), "vb" to setOf("b"), "vd" to setOf("P", "P-d", "d"))
+        val fronts = mapOf("va" to "a", "vb" to "b", "vd" to "d")
+        val guard = ParkGuard(ParkSafety(loop), { holdings.keys }, { holdings.getValue(it) }, fronts::get) { false }
 
-        // ve at c would wait only for P, which vd gives up as it drives: the local rule allows it. But until vd has
-        // left P, the loop would be full with its one park bay covered.
-        f.allocate(ve, "e-c", "c")
+        guard.mayGrant("ve", "c", setOf("e-c", "c")) shouldBe false
+        guard.heldBack shouldBe 1
+        holdings["vd"] = setOf("d")
+        guard.mayGrant("ve", "c", setOf("e-c", "c")) shouldBe true
+    }
 
-        ve.granted.shouldBeEmpty()
-        f.scheduler.grantsHeldBack shouldBe 1
-        f.free(vd, "P", "P-d")
-        ve.granted shouldContainExactly listOf(setOf("e-c", "c"))
+    test("with more vehicles than park points the test is off") {
+        val holdings = (1..5).associate { "v$it" to setOf("a") }
+        val guard = ParkGuard(ParkSafety(loop), { holdings.keys }, { holdings.getValue(it) }, { "a" }) { false }
+
+        guard.mayGrant("v6", "b", setOf("a-b", "b")) shouldBe true
     }
 })
 
