@@ -18,12 +18,15 @@ class DeadlockWatchdog(private val kernel: KernelCore, private val state: Kernel
     private var next: Cancellable? = null
     private val stuck = StuckStates()
     private val idleBlockers = IdleBlockers(kernel, state)
+    private val retreating = Retreats(kernel)
 
     override val detected: Int get() = stuck.detected
 
     override val resolved: Int get() = stuck.resolved
 
     override val idleVehiclesMoved: Int get() = idleBlockers.moved
+
+    override val retreats: Int get() = retreating.sent
 
     fun start() {
         val interval = kernel.options.deadlockCheckIntervalMillis
@@ -44,6 +47,9 @@ class DeadlockWatchdog(private val kernel: KernelCore, private val state: Kernel
 
     /** Finds and handles the current deadlocks. */
     fun check() {
+        // A fleet held back by deadlock avoidance gets moving by a retreat first: planned avoidance, not a deadlock
+        // found (a cycle it breaks is not counted; one it does not break is found at the next check).
+        if (retreating.check()) return
         // Asks the scheduler's interface only, so a replaced scheduler keeps the watchdog working.
         val graph = WaitForGraph(kernel.scheduler.waitsFor())
         val deadlocks = DeadlockDetector.detect(graph)
@@ -56,10 +62,7 @@ class DeadlockWatchdog(private val kernel: KernelCore, private val state: Kernel
             val verdict = stuck.observe(deadlock.vehicles, held)
             if (verdict.isNew) report(deadlock)
             if (!verdict.resolveNow) return@forEach
-            if (DeadlockDetector.resolutions(deadlock, graph).any {
-                    kernel.reroute(it.vehicle, it.resourcesToAvoid)
-                }
-            ) {
+            if (breakDeadlock(deadlock, graph, again = !verdict.isNew)) {
                 stuck.rerouted(deadlock.vehicles)
                 log.info("deadlock: rerouted a vehicle to break it: vehicles={}", deadlock.vehicles)
             } else if (verdict.isNew) {
@@ -67,6 +70,15 @@ class DeadlockWatchdog(private val kernel: KernelCore, private val state: Kernel
             }
         }
         idleBlockers.check(graph)
+    }
+
+    // Routes one vehicle of [deadlock] around what it waits for, else sends one off the lanes through a free park
+    // point (a retreat); a knot that came back after that ([again]) gets the retreat first, since routing around
+    // it did not last.
+    private fun breakDeadlock(deadlock: Deadlock, graph: WaitForGraph, again: Boolean): Boolean {
+        if (again && retreating.breakCycle(deadlock.vehicles)) return true
+        return DeadlockDetector.resolutions(deadlock, graph).any { kernel.reroute(it.vehicle, it.resourcesToAvoid) } ||
+            retreating.breakCycle(deadlock.vehicles)
     }
 
     private fun report(deadlock: Deadlock) {

@@ -174,6 +174,10 @@ class KernelCore(
      */
     fun reroute(vehicle: String, avoid: Set<String>): Boolean = state.controllers.controller(vehicle).reroute(avoid)
 
+    /** Sends [vehicle] on through the free park point [park], avoiding [occupied] on the way there. */
+    fun retreat(vehicle: String, park: String, occupied: Set<String>): Boolean =
+        state.controllers.controller(vehicle).retreat(park, occupied)
+
     /** Hands the router the current layout again (path and location locks included). */
     fun updateRoutingTopology() = router.updateTopology(state.plant.layoutWithLocks())
 

@@ -8,6 +8,12 @@ interface WatchdogFigures {
     /** How many deadlocks ended after the watchdog rerouted one of their vehicles. */
     val resolved: Int
 
+    /**
+     * How many vehicles held back by deadlock avoidance were sent on through a free park point (planned avoidance,
+     * not a deadlock: see the developer's guide, "The traffic rule").
+     */
+    val retreats: Int
+
     /** How many idle vehicles were sent out of the way of waiting ones. */
     val idleVehiclesMoved: Int
 }

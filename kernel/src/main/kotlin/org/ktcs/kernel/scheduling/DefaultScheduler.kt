@@ -26,15 +26,20 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     private var pending = PendingRequests()
     private var deliveries = Deliveries(clock)
     private var safety = newSafety(model)
+    private var parks = newParkGuard(model)
     private val deferred = TreeSet(compareBy(Request::seq))
     private val deferredSince = HashMap<Long, Long>()
     private val claims = LinkedHashMap<String, List<Set<String>>>()
     private val lastGrants = HashMap<String, Request>()
     private val paused = HashSet<String>()
+
+    // Per request the park test refused, how many releases there had been: only a release can make it safe.
+    private val parkRefusedAt = HashMap<Long, Long>()
+    private var releases = 0L
     private var nextSeq = 0L
 
     /** How many grants deadlock avoidance held back so far (each one until it was safe). */
-    val grantsHeldBack: Long get() = safety.heldBack
+    val grantsHeldBack: Long get() = safety.heldBack + parks.heldBack
 
     override fun updatePlantModel(model: PlantModel) {
         deliveries.cancelAll()
@@ -43,8 +48,10 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         pending = PendingRequests()
         deliveries = Deliveries(clock)
         safety = newSafety(model)
+        parks = newParkGuard(model)
         deferred.clear()
         deferredSince.clear()
+        parkRefusedAt.clear()
         lastGrants.clear()
         claims.clear()
         paused.clear()
@@ -89,6 +96,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
 
     override fun free(client: SchedulerClient, resources: Set<String>) {
         val released = occupancy.release(client.name, resources)
+        if (released.isNotEmpty()) releases++
         safety.standing(client.name)
         wake(released)
         retryDeferred()
@@ -100,6 +108,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         claims.remove(client.name)
         lastGrants.remove(client.name)
         safety.remove(client.name)
+        releases++
         wake(occupancy.releaseAll(client.name))
         retryDeferred()
     }
@@ -192,6 +201,41 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     /** What [client] still needs as deadlock avoidance sees it: its claimed route ahead and its way out. */
     fun needs(client: String): Set<String> = safety.needs(client)
 
+    private fun newParkGuard(model: PlantModel) =
+        ParkGuard(ParkSafety(model), { occupancy.clients() }, { occupancy.holdingKeys(it) }, ::frontOf) {
+            blocks.singleBlocksOf(it).isNotEmpty()
+        }
+
+    // The point a client stands on or was granted last and still holds, if known.
+    private fun frontOf(client: String): String? {
+        val last = lastGrants[client]?.takeIf { occupancy.holdingKeys(client).containsAll(it.keys) }
+        return last?.let { pointOf(it.resources) } ?: occupancy.holdingKeys(client).singleOrNull(safety::isPoint)
+    }
+
+    /**
+     * The clients held back for longer than two watchdog periods that could retreat now, each with the nearest free
+     * park point it reaches over free points, longest held back first: how the watchdog gets a fleet moving again
+     * that deadlock avoidance holds back in a safe state.
+     */
+    fun retreats(): List<Pair<String, String>> {
+        val now = clock.elapsedMillis()
+        return deferred.filter { now - (deferredSince[it.seq] ?: now) >= HELD_BACK_REPORT_MILLIS }
+            .sortedBy { deferredSince[it.seq] }
+            .mapNotNull { request -> parks.retreatPoint(request.client.name)?.let { request.client.name to it } }
+    }
+
+    /** The nearest free park point [client] reaches now over points nobody holds, or null. */
+    fun retreatPoint(client: String): String? = parks.retreatPoint(client)
+
+    /**
+     * Retries the grants held back for longer than the park test's patience, which the local rule alone decides now
+     * (called by the watchdog: nothing else may change while the fleet stands).
+     */
+    fun retryOverdue() {
+        val now = clock.elapsedMillis()
+        if (deferred.any { now - (deferredSince[it.seq] ?: now) >= PARK_TEST_PATIENCE_MILLIS }) retryDeferred()
+    }
+
     private fun newSafety(model: PlantModel) = RouteSafety(ExitCorridors(model), {
         occupancy.holdingKeys(it)
     }, { occupancy.holdersOf(it) })
@@ -215,6 +259,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         deferred.clear()
         process(retry)
         if (deferredSince.size > deferred.size) deferredSince.keys.retainAll(deferred.mapTo(HashSet()) { it.seq })
+        if (parkRefusedAt.size > deferred.size) parkRefusedAt.keys.retainAll(deferred.mapTo(HashSet()) { it.seq })
     }
 
     private fun newRequest(client: SchedulerClient, resources: Set<String>): Request {
@@ -235,15 +280,27 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
             val request = queue.pollFirst()!!
             if (!pending.isHead(request) || !isGrantable(request)) continue
             val behind = keysOf(request.client.heldAfter(request.resources))
-            if (!safety.mayGrant(request.client.name, request.keys, behind)) {
+            if (!safety.mayGrant(request.client.name, request.keys, behind) || !parkSafe(request, behind)) {
                 deferred += request
                 deferredSince.putIfAbsent(request.seq, clock.elapsedMillis())
                 continue
             }
             deferredSince.remove(request.seq)
+            parkRefusedAt.remove(request.seq)
             pending.pop(request.client.name)?.let(queue::add)
             queue += pending.waitingFor(grant(request))
         }
+    }
+
+    // The park test is a preference, not a wall: a grant it has held back for PARK_TEST_PATIENCE_MILLIS is left to the
+    // local rule alone (whose holds the watchdog sees), so a plant the test judges too pessimistically never freezes.
+    private fun parkSafe(request: Request, behind: Set<String>): Boolean {
+        val since = deferredSince[request.seq]
+        if (since != null && clock.elapsedMillis() - since >= PARK_TEST_PATIENCE_MILLIS) return true
+        if (parkRefusedAt[request.seq] == releases) return false
+        if (parks.mayGrant(request.client.name, pointOf(request.resources), request.keys + behind)) return true
+        parkRefusedAt[request.seq] = releases
+        return false
     }
 
     private fun isGrantable(request: Request): Boolean =
@@ -260,6 +317,9 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     private companion object {
         /** Two watchdog periods: shorter refusals are queues moving along, not vehicles stuck face to face. */
         const val HELD_BACK_REPORT_MILLIS = 2_000L
+
+        /** How long the park test may hold a grant back before the local rule alone decides it. */
+        const val PARK_TEST_PATIENCE_MILLIS = 10_000L
         private val log = LoggerFactory.getLogger(DefaultScheduler::class.java)
     }
 }

@@ -23,6 +23,9 @@ internal class Occupancy(private val blocks: BlockIndex) {
     /** Who holds [key], a resource or the name of a SAME_DIRECTION_ONLY block. */
     fun holdersOf(key: String): Collection<String> = holders[key] ?: directions.users(key)
 
+    /** The clients holding anything. */
+    fun clients(): Set<String> = held.keys
+
     fun snapshot(): Map<String, Set<String>> = held.mapValues { it.value.toSet() }
 
     fun mayTake(client: String, request: Request): Boolean =

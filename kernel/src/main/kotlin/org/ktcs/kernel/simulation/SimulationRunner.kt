@@ -136,6 +136,7 @@ class SimulationRunner(
             deadlocksDetected = kernel.core.watchdog.detected,
             deadlocksResolved = kernel.core.watchdog.resolved,
             idleVehiclesMoved = kernel.core.watchdog.idleVehiclesMoved,
+            retreats = kernel.core.watchdog.retreats,
             grantsHeldBack = (kernel.core.scheduler as? DefaultScheduler)?.grantsHeldBack ?: 0,
         )
     }

@@ -153,3 +153,27 @@ internal fun VehicleController.rerouteLegs(order: TransportOrder, legs: List<Dri
     claimRestOfOrder(env.orders.require(order.name), order.currentDriveOrderIndex)
     return true
 }
+
+/**
+ * Routes the rest of the current drive order through the free park point [park] and on to where it went (a
+ * *retreat*: off the lanes, the vehicle frees its point for the vehicles held back behind it), the way to [park]
+ * avoiding [occupied]; taken only if the vehicle would not wait, through others, for itself with it. Returns whether
+ * the vehicle follows the new route.
+ */
+internal fun VehicleController.retreatVia(park: String, occupied: Set<String>): Boolean {
+    val order = currentOrder?.let(env.orders::require) ?: return false
+    if (withdrawing) return false
+    val driveOrder = order.driveOrders[order.currentDriveOrderIndex]
+    val oldRoute = driveOrder.route ?: return false
+    val vehicle = env.plant.vehicle(name)
+    val start = sent.lastOrNull()?.command?.step?.destinationPoint ?: vehicle.currentPosition ?: return false
+    val target = oldRoute.finalDestinationPoint ?: return false
+    val away = env.router().routes(vehicle, start, park, occupied - start).firstOrNull() ?: return false
+    val back = env.router().routes(vehicle, park, target).firstOrNull() ?: return false
+    val steps = (away.steps + back.steps).filter { it.path != null }
+    if (steps.isEmpty()) return false
+    val rerouted = reroutedDriveOrder(order, driveOrder, oldRoute, Route(steps, away.costs + back.costs))
+    if (closesCycle(order, commandsAhead(order, rerouted))) return false
+    followNewRoute(order, rerouted)
+    return true
+}

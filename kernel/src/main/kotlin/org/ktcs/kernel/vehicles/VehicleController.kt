@@ -364,6 +364,9 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
     fun reroute(avoid: Set<String>, forced: Boolean): String? =
         (attemptReroute(avoid, forced, onRequest = true, safely = false) as? Refused)?.reason
 
+    /** Sends the vehicle on through the free park point [park] (see [retreatVia]); returns whether it was. */
+    fun retreat(park: String, occupied: Set<String>): Boolean = retreatVia(park, occupied)
+
     /** The driver can take more commands now (e.g. it was enabled). */
     fun onDriverReady() {
         requestNext()

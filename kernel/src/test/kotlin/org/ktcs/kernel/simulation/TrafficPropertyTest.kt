@@ -98,7 +98,7 @@ class TrafficPropertyTest : FunSpec({
     }
 
     // The target of issue #11, not met yet: of 60 random plants per kind (TrafficScoreBenchmark, seed 77, 8 orders),
-    // 52 one-way, 25 mixed and 4 two-way ones finish cleanly; the rest reach a state where the watchdog reports a
+    // 47 one-way, 35 mixed and 8 two-way ones finish cleanly; the rest reach a state where the watchdog reports a
     // deadlock (README, "Traffic control: figures"). Enable it when the rule is complete.
     test("every order finishes or is unroutable, and the watchdog never fires").config(enabled = false) {
         forRandomRuns(mixed, seed = 2_222, iterations = 40) { orders ->

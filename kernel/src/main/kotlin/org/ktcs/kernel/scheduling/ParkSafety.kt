@@ -1,0 +1,198 @@
+package org.ktcs.kernel.scheduling
+
+import org.ktcs.api.model.PlantModel
+import org.ktcs.api.model.PointType
+
+/**
+ * The fleet-wide safety test of deadlock avoidance (developer's guide, "The traffic rule"): a state is *safe* if the
+ * vehicles can be taken off the lanes one by one, each driving from its front (the point it stands on or was granted
+ * last) over points free at that moment (the points of vehicles taken off before it count as free) into a park
+ * point. A vehicle whose front is a park point, or a point from which no park point can be reached even on an empty
+ * plant (the test has nothing to say about it), is taken off at once. Paths and locations are left out: a point is
+ * free when nobody holds it. A park point is not used up by the vehicle that drives into it (the vehicle may drive on
+ * from there, and counting each park point once cost far more than the grids' grants can afford: guide, section 12).
+ *
+ * One check grows the set of points that reach a free park point backwards from those park points, and a vehicle
+ * taken off frees its points, which may join the set: a check costs the points and paths of the plant once, not a
+ * search per vehicle. Built once per model; locks are ignored.
+ */
+internal class ParkSafety(model: PlantModel) {
+    private val names: List<String> = model.points.map { it.name }
+    private val index: Map<String, Int> = names.withIndex().associate { (i, name) -> name to i }
+    private val isPark = BooleanArray(names.size) { model.points[it].type == PointType.PARK_POSITION }
+    private val successors: Array<IntArray>
+    private val predecessors: Array<IntArray>
+
+    private val parkList: IntArray = names.indices.filter { isPark[it] }.toIntArray()
+
+    /** How many park points the plant has: with fewer than there are vehicles the test cannot hold. */
+    val parkPoints: Int = parkList.size
+
+    init {
+        val next = Array(names.size) { ArrayList<Int>() }
+        val previous = Array(names.size) { ArrayList<Int>() }
+        fun edge(from: String, to: String) {
+            val a = index[from] ?: return
+            val b = index[to] ?: return
+            next[a] += b
+            previous[b] += a
+        }
+        for (path in model.paths) {
+            if (path.maxVelocity > 0) edge(path.sourcePoint, path.destinationPoint)
+            if (path.maxReverseVelocity > 0) edge(path.destinationPoint, path.sourcePoint)
+        }
+        successors = Array(names.size) { next[it].toIntArray() }
+        predecessors = Array(names.size) { previous[it].toIntArray() }
+    }
+
+    // The points from which a park point can be reached on an empty plant.
+    private val canPark = BooleanArray(names.size).also { reached ->
+        val queue = IntQueue()
+        for (point in parkList) {
+            reached[point] = true
+            queue.push(point)
+        }
+        while (queue.isNotEmpty()) {
+            for (previous in predecessors[queue.take()]) {
+                if (reached[previous]) continue
+                reached[previous] = true
+                queue.push(previous)
+            }
+        }
+    }
+
+    private val buffers by lazy { Buffers() }
+
+    /** The index of point [name], or -1 if it is none. */
+    fun pointIndex(name: String): Int = index[name] ?: -1
+
+    /**
+     * Whether every vehicle of [fleet] can be taken off the lanes (see the class). [fleet] lists each vehicle's front
+     * and the points it holds, as indices ([pointIndex]).
+     */
+    fun isSafe(fleet: List<Standing>): Boolean = Check(fleet).removeAll() == fleet.size
+
+    /**
+     * The nearest free park point [vehicle] of [fleet] reaches from its front over points nobody holds, or null: where
+     * it can retreat to now.
+     */
+    fun retreatPoint(fleet: List<Standing>, vehicle: Standing): String? {
+        val held = BooleanArray(names.size)
+        for (standing in fleet) standing.points.forEach { held[it] = true }
+        val seen = BooleanArray(names.size)
+        val queue = ArrayDeque<Int>()
+        seen[vehicle.front] = true
+        queue += vehicle.front
+        while (queue.isNotEmpty()) {
+            for (next in successors[queue.removeFirst()]) {
+                if (seen[next] || held[next]) continue
+                if (isPark[next]) return names[next]
+                seen[next] = true
+                queue += next
+            }
+        }
+        return null
+    }
+
+    /**
+     * One vehicle as the test sees it: its [front], the [points] it holds and the points it can drive off from
+     * ([exits]: its front and, inside a single-vehicle block, the block's points it holds), as indices.
+     */
+    class Standing(val name: String, val front: Int, val points: IntArray, val exits: IntArray = intArrayOf(front))
+
+    /**
+     * One run of the test; see [removeAll]. Its arrays are reused from run to run (the scheduler is confined to the
+     * kernel context); a run clears what it touched.
+     */
+    private inner class Check(private val fleet: List<Standing>) {
+        private val holders = buffers.holders
+        private val reaches = buffers.reaches
+        private val frontHead = buffers.frontHead
+
+        // Per point, the vehicles that can leave from it (linked through the nodes: vehicle index, next node).
+        private val nodeVehicle = IntArray(fleet.sumOf { it.exits.size })
+        private val nodeNext = IntArray(nodeVehicle.size)
+        private val removed = BooleanArray(fleet.size)
+        private val candidates = IntStack()
+
+        // First in, first out: each point joins once, and a check walks the plant once.
+        private val grow = IntQueue()
+        private val touched = IntStack()
+
+        /** Takes vehicles off as long as one can be; returns how many were. */
+        fun removeAll(): Int = try {
+            run()
+        } finally {
+            touched.forEach { point ->
+                holders[point] = 0
+                reaches[point] = false
+                frontHead[point] = -1
+            }
+        }
+
+        private fun run(): Int {
+            var nodes = 0
+            fleet.forEachIndexed { i, vehicle ->
+                vehicle.points.forEach { point ->
+                    holders[point]++
+                    touched.push(point)
+                }
+                vehicle.exits.forEach { point ->
+                    nodeVehicle[nodes] = i
+                    nodeNext[nodes] = frontHead[point]
+                    frontHead[point] = nodes++
+                    touched.push(point)
+                }
+                if (isPark[vehicle.front] || !canPark[vehicle.front]) candidates.push(i)
+            }
+            for (point in parkList) if (holders[point] == 0) join(point)
+            spread()
+            var count = 0
+            while (candidates.isNotEmpty()) {
+                val i = candidates.pop()
+                if (removed[i]) continue
+                removed[i] = true
+                count++
+                free(fleet[i])
+                spread()
+            }
+            return count
+        }
+
+        private fun free(vehicle: Standing) {
+            for (point in vehicle.points) {
+                holders[point]--
+                if (holders[point] > 0 || reaches[point]) continue
+                if (isPark[point] || successors[point].any { reaches[it] }) join(point)
+            }
+        }
+
+        private fun join(point: Int) {
+            reaches[point] = true
+            touched.push(point)
+            grow.push(point)
+        }
+
+        // Backwards from every point that joined: free predecessors join, vehicles standing on them can leave.
+        private fun spread() {
+            while (grow.isNotEmpty()) {
+                val point = grow.take()
+                for (previous in predecessors[point]) {
+                    var node = frontHead[previous]
+                    while (node >= 0) {
+                        if (!removed[nodeVehicle[node]]) candidates.push(nodeVehicle[node])
+                        node = nodeNext[node]
+                    }
+                    if (!reaches[previous] && holders[previous] == 0) join(previous)
+                }
+            }
+        }
+    }
+
+    /** Per-point arrays of [Check], kept clean between runs. */
+    private inner class Buffers {
+        val holders = IntArray(names.size)
+        val reaches = BooleanArray(names.size)
+        val frontHead = IntArray(names.size) { -1 }
+    }
+}
