@@ -1,5 +1,6 @@
 package org.ktcs.kernel.routing
 
+import org.ktcs.kernel.routing.IndexedGraph.Exclusion
 import java.util.BitSet
 
 /**
@@ -52,24 +53,14 @@ internal class IndexedGraph(graph: RoutingGraph) {
     class Exclusion(val points: BitSet, val edges: BitSet)
 
     /**
-     * Dijkstra's algorithm from [source] around [excluded], until every point of [targets] is settled (all points if
-     * [targets] is `null`). Ties are broken by point index, so the same question always gets the same tree.
+     * Dijkstra's algorithm from [source] around [excluded], settling points only as far as the questions asked of the
+     * tree need. Ties are broken by point index, so a tree answers every question as a complete search would.
      */
-    fun search(source: Int, excluded: Exclusion?, targets: IntArray? = null): ShortestPathTree {
-        val tree = ShortestPathTree(this, source)
-        var remaining = targets?.count { it != source && excluded?.points?.get(it) != true } ?: Int.MAX_VALUE
-        val queue = PointQueue(size, tree.costs)
-        tree.costs[source] = 0
-        queue.offer(source)
-        while (remaining > 0 && queue.isNotEmpty()) {
-            val point = queue.poll()
-            if (point != source && targets != null && point in targets) remaining--
-            relaxEdgesOf(point, tree, queue, excluded)
-        }
-        return tree
-    }
+    fun search(source: Int, excluded: Exclusion?): ShortestPathTree = ShortestPathTree(this, source, excluded)
 
-    private fun relaxEdgesOf(point: Int, tree: ShortestPathTree, queue: PointQueue, excluded: Exclusion?) {
+    /** Settles the cheapest point of [queue] and offers its neighbours; returns it. */
+    internal fun settleNext(tree: ShortestPathTree, queue: PointQueue, excluded: Exclusion?): Int {
+        val point = queue.poll()
         val base = tree.costs[point]
         for (edge in firstEdge[point] until firstEdge[point + 1]) {
             val target = edgeTarget[edge]
@@ -81,21 +72,34 @@ internal class IndexedGraph(graph: RoutingGraph) {
                 queue.offer(target)
             }
         }
+        return point
     }
 }
 
 /**
- * The cheapest costs from one point, and the last edge of the cheapest route to each point, as far as a search
- * settled them. A point not reached has costs [Long.MAX_VALUE].
+ * The cheapest routes from one point ([source]): a search that goes on only as far as the points asked about
+ * ([costsTo], [edgesTo]), so a question about a near point costs a search of the neighbourhood, and a later question
+ * about a farther one resumes it. What it answered stays true: the graph never changes.
  */
-internal class ShortestPathTree(private val graph: IndexedGraph, val source: Int) {
+internal class ShortestPathTree(private val graph: IndexedGraph, val source: Int, private val excluded: Exclusion?) {
     val costs = LongArray(graph.size) { Long.MAX_VALUE }
     val viaEdge = IntArray(graph.size) { -1 }
+    private var queue: PointQueue? = PointQueue(graph.size, costs)
 
-    fun reached(point: Int): Boolean = costs[point] != Long.MAX_VALUE
+    init {
+        costs[source] = 0
+        queue?.offer(source)
+    }
 
-    /** The edges of the cheapest route to [point], in driving order; empty for the source. */
-    fun edgesTo(point: Int): List<RoutingEdge> {
+    /** The costs of the cheapest route to [point], or `null` if it cannot be reached. */
+    fun costsTo(point: Int): Long? {
+        settle(point)
+        return costs[point].takeIf { it != Long.MAX_VALUE }
+    }
+
+    /** The edges of the cheapest route to [point] in driving order (empty for the source), or `null` if none. */
+    fun edgesTo(point: Int): List<RoutingEdge>? {
+        costsTo(point) ?: return null
         val reversed = ArrayList<RoutingEdge>()
         var at = point
         while (at != source) {
@@ -105,18 +109,27 @@ internal class ShortestPathTree(private val graph: IndexedGraph, val source: Int
         }
         return reversed.asReversed()
     }
+
+    private fun settle(point: Int) {
+        val pending = queue ?: return
+        while (!pending.isSettled(point) && pending.isNotEmpty()) graph.settleNext(this, pending, excluded)
+        // A drained queue has settled all it can reach: its arrays can go.
+        if (!pending.isNotEmpty()) queue = null
+    }
 }
 
 /**
  * A binary min-heap of point indices ordered by their costs (then by index), with decrease-key: a point offered
  * again after its costs dropped moves up instead of being queued twice.
  */
-private class PointQueue(size: Int, private val costs: LongArray) {
+internal class PointQueue(size: Int, private val costs: LongArray) {
     private val heap = IntArray(size)
     private val position = IntArray(size) { -1 }
     private var count = 0
 
     fun isNotEmpty(): Boolean = count > 0
+
+    fun isSettled(point: Int): Boolean = position[point] == SETTLED
 
     fun offer(point: Int) {
         if (position[point] == SETTLED) return
