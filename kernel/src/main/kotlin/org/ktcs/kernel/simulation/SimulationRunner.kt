@@ -1,6 +1,7 @@
 package org.ktcs.kernel.simulation
 
 import org.koin.dsl.module
+import org.ktcs.api.dispatching.Dispatcher
 import org.ktcs.api.event.KernelEvent
 import org.ktcs.api.event.TransportOrderEvent
 import org.ktcs.api.event.VehicleEvent
@@ -8,7 +9,6 @@ import org.ktcs.api.model.PlantModel
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
-import org.ktcs.api.dispatching.Dispatcher
 import org.ktcs.api.routing.Router
 import org.ktcs.extension.KernelDefaults
 import org.ktcs.extension.KtcsExtension
