@@ -1,5 +1,7 @@
 package org.ktcs.kernel.routing
 
+import org.jheaps.AddressableHeap
+import org.jheaps.tree.PairingHeap
 import org.ktcs.kernel.routing.IndexedGraph.Exclusion
 import java.util.BitSet
 
@@ -54,22 +56,22 @@ internal class IndexedGraph(graph: RoutingGraph) {
 
     /**
      * Dijkstra's algorithm from [source] around [excluded], settling points only as far as the questions asked of the
-     * tree need. Ties are broken by point index, so a tree answers every question as a complete search would.
+     * tree need. It breaks ties between routes of equal costs as JGraphT's `DijkstraShortestPath` does (same edge
+     * order, same heap), so the router's choices do not change with the way it searches.
      */
     fun search(source: Int, excluded: Exclusion?): ShortestPathTree = ShortestPathTree(this, source, excluded)
 
-    /** Settles the cheapest point of [queue] and offers its neighbours; returns it. */
-    internal fun settleNext(tree: ShortestPathTree, queue: PointQueue, excluded: Exclusion?): Int {
-        val point = queue.poll()
+    /** Settles the cheapest point of [frontier] and offers its neighbours; returns it. */
+    internal fun settleNext(tree: ShortestPathTree, frontier: Frontier, excluded: Exclusion?): Int {
+        val point = frontier.poll()
         val base = tree.costs[point]
         for (edge in firstEdge[point] until firstEdge[point + 1]) {
             val target = edgeTarget[edge]
             if (excluded != null && (excluded.edges[edge] || excluded.points[target])) continue
             val cost = base + edgeCost[edge]
-            if (cost < tree.costs[target]) {
+            if (frontier.offer(target, cost)) {
                 tree.costs[target] = cost
                 tree.viaEdge[target] = edge
-                queue.offer(target)
             }
         }
         return point
@@ -84,11 +86,11 @@ internal class IndexedGraph(graph: RoutingGraph) {
 internal class ShortestPathTree(private val graph: IndexedGraph, val source: Int, private val excluded: Exclusion?) {
     val costs = LongArray(graph.size) { Long.MAX_VALUE }
     val viaEdge = IntArray(graph.size) { -1 }
-    private var queue: PointQueue? = PointQueue(graph.size, costs)
+    private var frontier: Frontier? = Frontier(graph.size)
 
     init {
         costs[source] = 0
-        queue?.offer(source)
+        frontier?.offer(source, 0)
     }
 
     /** The costs of the cheapest route to [point], or `null` if it cannot be reached. */
@@ -111,81 +113,48 @@ internal class ShortestPathTree(private val graph: IndexedGraph, val source: Int
     }
 
     private fun settle(point: Int) {
-        val pending = queue ?: return
+        val pending = frontier ?: return
         while (!pending.isSettled(point) && pending.isNotEmpty()) graph.settleNext(this, pending, excluded)
-        // A drained queue has settled all it can reach: its arrays can go.
-        if (!pending.isNotEmpty()) queue = null
+        // A drained frontier has settled all it can reach: its heap can go.
+        if (!pending.isNotEmpty()) frontier = null
     }
 }
 
 /**
- * A binary min-heap of point indices ordered by their costs (then by index), with decrease-key: a point offered
- * again after its costs dropped moves up instead of being queued twice.
+ * The points a search has reached but not settled, cheapest first: the pairing heap JGraphT's Dijkstra uses, fed in
+ * the same order, so that points of equal costs come out in the same order as there (a binary heap, or any other
+ * tie-break, picks other routes among equally cheap ones, and the vehicles' traffic changes with them).
  */
-internal class PointQueue(size: Int, private val costs: LongArray) {
-    private val heap = IntArray(size)
-    private val position = IntArray(size) { -1 }
-    private var count = 0
+internal class Frontier(size: Int) {
+    private val heap = PairingHeap<Long, Int>()
+    private val handles = arrayOfNulls<AddressableHeap.Handle<Long, Int>>(size)
+    private val settled = BitSet(size)
 
-    fun isNotEmpty(): Boolean = count > 0
+    fun isNotEmpty(): Boolean = !heap.isEmpty
 
-    fun isSettled(point: Int): Boolean = position[point] == SETTLED
+    fun isSettled(point: Int): Boolean = settled[point]
 
-    fun offer(point: Int) {
-        if (position[point] == SETTLED) return
-        if (position[point] < 0) {
-            heap[count] = point
-            position[point] = count
-            count++
+    /** Offers [point] at [cost]; whether that is cheaper than it was offered before (always, the first time). */
+    fun offer(point: Int, cost: Long): Boolean {
+        val handle = handles[point]
+        return when {
+            handle == null -> {
+                handles[point] = heap.insert(cost, point)
+                true
+            }
+
+            cost < handle.key -> {
+                handle.decreaseKey(cost)
+                true
+            }
+
+            else -> false
         }
-        siftUp(position[point])
     }
 
     fun poll(): Int {
-        val first = heap[0]
-        position[first] = SETTLED
-        count--
-        if (count > 0) {
-            place(heap[count], 0)
-            siftDown(0)
-        }
-        return first
-    }
-
-    private fun siftUp(start: Int) {
-        var at = start
-        val point = heap[at]
-        while (at > 0) {
-            val parent = (at - 1) / 2
-            if (!before(point, heap[parent])) break
-            place(heap[parent], at)
-            at = parent
-        }
-        place(point, at)
-    }
-
-    private fun siftDown(start: Int) {
-        var at = start
-        val point = heap[at]
-        while (true) {
-            var child = 2 * at + 1
-            if (child >= count) break
-            if (child + 1 < count && before(heap[child + 1], heap[child])) child++
-            if (!before(heap[child], point)) break
-            place(heap[child], at)
-            at = child
-        }
-        place(point, at)
-    }
-
-    private fun place(point: Int, at: Int) {
-        heap[at] = point
-        position[point] = at
-    }
-
-    private fun before(a: Int, b: Int): Boolean = costs[a] < costs[b] || (costs[a] == costs[b] && a < b)
-
-    private companion object {
-        const val SETTLED = -2
+        val point = heap.deleteMin().value
+        settled.set(point)
+        return point
     }
 }

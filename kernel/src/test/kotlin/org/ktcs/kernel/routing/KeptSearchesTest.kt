@@ -5,8 +5,10 @@ import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.nulls.shouldNotBeNull
 import io.kotest.matchers.shouldBe
 import io.kotest.property.checkAll
+import org.jgrapht.alg.shortestpath.DijkstraShortestPath
 import org.ktcs.api.model.Link
 import org.ktcs.api.order.Destination
+import org.ktcs.kernel.simulation.TrafficGrid
 import kotlin.random.Random
 
 /**
@@ -31,6 +33,26 @@ class KeptSearchesTest : FunSpec({
                     costs(target) shouldBe cheapest[target]
                     router.routes(case.vehicle, source, target).firstOrNull()?.costs shouldBe cheapest[target]
                 }
+            }
+        }
+    }
+
+    test(
+        "among equally cheap routes it picks the one JGraphT's Dijkstra picks, so the vehicles' traffic stays the same",
+    ) {
+        // A traffic grid has many routes of equal costs between two points; another tie-break picks other ones.
+        val model = TrafficGrid(8, 8, vehicles = 4).build()
+        val configuration = RouterConfiguration()
+        val costs = EdgeCosts(model, configuration, configuration.graphKeyOf(model.vehicles.first()))
+        val graph = buildRoutingGraph(model, includeLocked = false, costs::of)
+        val reference = DijkstraShortestPath(graph)
+        val search = RouteSearch(graph, RoutingAlgorithm.DIJKSTRA)
+        val points = model.points.map { it.name }
+        for (source in points) {
+            val routes = search.cheapestFrom(source, points)
+            val expected = reference.getPaths(source)
+            for (target in points.filter { it != source }) {
+                routes[target]?.steps?.map { it.path } shouldBe expected.getPath(target)?.edgeList?.map { it.path }
             }
         }
     }
