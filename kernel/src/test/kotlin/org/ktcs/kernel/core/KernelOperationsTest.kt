@@ -52,8 +52,9 @@ class KernelOperationsTest : FunSpec({
                 createTransportOrder(TransportOrderCreation("Second", longTrip, dependencies = setOf("First")))
             }
             kernel.state("Second") shouldBe TransportOrderState.ACTIVE
-            kernel.context.runUntil { kernel.state("First") == TransportOrderState.FINISHED }
-            kernel.state("Second") shouldBe TransportOrderState.DISPATCHABLE
+            // The dispatcher runs right after the task that made it dispatchable, so that is where to look.
+            kernel.context.runUntil { kernel.state("Second") != TransportOrderState.ACTIVE }
+            kernel.state("First") shouldBe TransportOrderState.FINISHED
             kernel.context.runUntil { kernel.state("Second").isFinal }
             kernel.state("Second") shouldBe TransportOrderState.FINISHED
         }
