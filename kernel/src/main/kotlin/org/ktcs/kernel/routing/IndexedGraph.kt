@@ -136,6 +136,8 @@ internal class Frontier(size: Int) {
 
     /** Offers [point] at [cost]; whether that is cheaper than it was offered before (always, the first time). */
     fun offer(point: Int, cost: Long): Boolean {
+        // A settled point's costs cannot drop (no negative costs); its heap node is gone.
+        if (settled[point]) return false
         val handle = handles[point]
         return when {
             handle == null -> {
@@ -155,6 +157,7 @@ internal class Frontier(size: Int) {
     fun poll(): Int {
         val point = heap.deleteMin().value
         settled.set(point)
+        handles[point] = null
         return point
     }
 }

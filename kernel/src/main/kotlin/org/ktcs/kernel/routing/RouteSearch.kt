@@ -118,7 +118,7 @@ internal class RouteSearch private constructor(
 /** The searches kept per routing graph: at least this many, */
 private const val MIN_KEPT_TREES = 16
 
-/** and as many as hold this many points in all (12 bytes a point, 20 while a search is unfinished: 6–10 MB). */
+/** and as many as hold this many points in all (12 bytes a point, and an unfinished search's frontier: about 6 MB). */
 private const val KEPT_TREE_POINTS = 500_000
 
 /** The [capacity] most recently used searches by source point, in access order. */
