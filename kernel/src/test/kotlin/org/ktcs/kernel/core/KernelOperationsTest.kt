@@ -52,9 +52,8 @@ class KernelOperationsTest : FunSpec({
                 createTransportOrder(TransportOrderCreation("Second", longTrip, dependencies = setOf("First")))
             }
             kernel.state("Second") shouldBe TransportOrderState.ACTIVE
-            // The dispatcher runs right after the task that made it dispatchable, so that is where to look.
-            kernel.context.runUntil { kernel.state("Second") != TransportOrderState.ACTIVE }
-            kernel.state("First") shouldBe TransportOrderState.FINISHED
+            kernel.context.runUntil { kernel.state("First") == TransportOrderState.FINISHED }
+            kernel.state("Second") shouldBe TransportOrderState.DISPATCHABLE
             kernel.context.runUntil { kernel.state("Second").isFinal }
             kernel.state("Second") shouldBe TransportOrderState.FINISHED
         }
