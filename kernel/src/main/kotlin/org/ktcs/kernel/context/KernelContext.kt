@@ -1,6 +1,5 @@
 package org.ktcs.kernel.context
 
-import org.ktcs.api.kernel.Cancellable
 import org.ktcs.api.kernel.KernelClock
 import kotlin.coroutines.Continuation
 import kotlin.coroutines.EmptyCoroutineContext
@@ -26,15 +25,6 @@ interface KernelContext : KernelClock, AutoCloseable {
     fun submit(task: () -> Unit) {
         execute(task)
     }
-
-    /**
-     * Runs [action] in the kernel context right after the current kernel task, ahead of the tasks already waiting;
-     * called outside a kernel task (or from such a follow-up), it runs as soon as possible, like [execute]. For work
-     * whose delay users notice, such as the dispatcher's run after a vehicle became free: as a task of its own it would
-     * wait behind every driver report queued meanwhile (hundreds at a time with 200 simulated vehicles at time factor
-     * 100).
-     */
-    fun scheduleNext(action: () -> Unit): Cancellable = schedule(0, action)
 
     /** Runs [block] in the kernel context and returns its result (or throws its exception) to the caller. */
     suspend fun <T> call(block: () -> T): T

@@ -29,11 +29,6 @@ class RealTimeKernelContext(private val wallClock: Clock = Clock.systemUTC()) : 
 
     override fun elapsedMillis(): Long = (System.nanoTime() - startNanos) / 1_000_000
 
-    private val followUps = FollowUps { schedule(0, it) }
-
-    override fun scheduleNext(action: () -> Unit): Cancellable =
-        if (isInKernelContext()) followUps.add(action) else schedule(0, action)
-
     override fun schedule(delayMillis: Long, action: () -> Unit): Cancellable {
         val future = try {
             executor.schedule({ runGuarded(action) }, delayMillis.coerceAtLeast(0), TimeUnit.MILLISECONDS)
@@ -53,10 +48,7 @@ class RealTimeKernelContext(private val wallClock: Clock = Clock.systemUTC()) : 
     override suspend fun <T> call(block: () -> T): T {
         if (isInKernelContext()) return block()
         val result = CompletableDeferred<T>()
-        executor.execute {
-            runCatching(block).fold(result::complete, result::completeExceptionally)
-            followUps.runAll(::runAction)
-        }
+        executor.execute { runCatching(block).fold(result::complete, result::completeExceptionally) }
         return result.await()
     }
 
@@ -67,13 +59,8 @@ class RealTimeKernelContext(private val wallClock: Clock = Clock.systemUTC()) : 
         executor.awaitTermination(5, TimeUnit.SECONDS)
     }
 
-    private fun runGuarded(action: () -> Unit) {
-        runAction(action)
-        followUps.runAll(::runAction)
-    }
-
     // A task that throws must not take the kernel thread down with it; the error is a bug to log, not to propagate.
-    private fun runAction(action: () -> Unit) {
+    private fun runGuarded(action: () -> Unit) {
         try {
             action()
         } catch (error: Exception) {

@@ -39,11 +39,6 @@ class VirtualTimeKernelContext(private val start: Instant = Instant.parse("2026-
         return Cancellable { task.cancelled = true }
     }
 
-    private val followUps = FollowUps { schedule(0, it) }
-
-    override fun scheduleNext(action: () -> Unit): Cancellable =
-        if (isInKernelContext()) followUps.add(action) else schedule(0, action)
-
     override suspend fun <T> call(block: () -> T): T {
         if (isInKernelContext()) return block()
         val result = CompletableDeferred<T>()
@@ -62,7 +57,6 @@ class VirtualTimeKernelContext(private val start: Instant = Instant.parse("2026-
                 if (task.cancelled) continue
                 nowMillis = maxOf(nowMillis, task.dueMillis)
                 task.action()
-                followUps.runAll { it() }
             }
             return true
         } finally {

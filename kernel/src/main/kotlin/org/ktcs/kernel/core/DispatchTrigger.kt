@@ -8,9 +8,7 @@ import org.ktcs.kernel.dispatching.IncrementalDispatcher
 /**
  * Runs the dispatcher soon after something may have become assignable, and periodically as a safety net. Many
  * requests in one kernel task lead to one run. A new order waits up to [newOrderDelayMillis] for its run, so orders
- * created one after another by a client share it; any other request runs it at once: right after the current kernel
- * task ([KernelContext.scheduleNext]), ahead of the driver reports queued meanwhile, so that a vehicle that became
- * free gets its next order without waiting for them.
+ * created one after another by a client share it; any other request runs it at once.
  *
  * A run asked for only by new orders ([requestForNewOrder]) and vehicles ([requestForVehicle]) is a run on changes
  * ([IncrementalDispatcher.dispatchChanges], given the new orders) if the dispatcher can do one; any other request
@@ -28,7 +26,7 @@ class DispatchTrigger(
     private var fullRunDue = false
     private val newOrders = ArrayList<String>()
 
-    /** Asks for a full dispatcher run right after the current kernel task. */
+    /** Asks for a full dispatcher run after the current kernel task. */
     fun request() {
         fullRunDue = true
         schedule(0)
@@ -40,7 +38,7 @@ class DispatchTrigger(
         schedule(newOrderDelayMillis)
     }
 
-    /** Asks for a run right after the current kernel task: a vehicle changed and may be able to take an order. */
+    /** Asks for a run after the current kernel task because a vehicle changed and may be able to take an order. */
     fun requestForVehicle() = schedule(0)
 
     // A run due later is brought forward by a request for one at once; otherwise one pending run serves all requests.
@@ -49,12 +47,11 @@ class DispatchTrigger(
         if (pending != null && (delayMillis > 0 || !scheduledLater)) return
         pending?.cancel()
         scheduledLater = delayMillis > 0
-        val action = {
+        scheduled = context.schedule(delayMillis) {
             scheduled = null
             scheduledLater = false
             run()
         }
-        scheduled = if (delayMillis > 0) context.schedule(delayMillis, action) else context.scheduleNext(action)
     }
 
     private fun run() {

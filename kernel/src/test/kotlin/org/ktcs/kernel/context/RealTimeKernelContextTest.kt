@@ -7,10 +7,7 @@ import io.kotest.matchers.string.shouldContain
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeout
-import java.util.Collections
-import java.util.concurrent.CountDownLatch
 import java.util.concurrent.RejectedExecutionException
-import java.util.concurrent.TimeUnit
 
 class RealTimeKernelContextTest : FunSpec({
     test("tasks run in order on the kernel thread") {
@@ -66,43 +63,5 @@ class RealTimeKernelContextTest : FunSpec({
         context.close()
 
         shouldThrow<RejectedExecutionException> { context.submit { error("must not run") } }
-    }
-
-    test("a follow-up runs right after its task, ahead of tasks queued meanwhile, also after a call") {
-        val context = RealTimeKernelContext()
-        val ran = Collections.synchronizedList(mutableListOf<String>())
-        val queuedWhileRunning = CountDownLatch(1)
-        val queuedTaskRan = CountDownLatch(1)
-        context.execute {
-            // A task queued while this one runs (a driver's report) waits for the follow-up.
-            Thread {
-                context.execute {
-                    ran += "queued task"
-                    queuedTaskRan.countDown()
-                }
-                queuedWhileRunning.countDown()
-            }.start()
-            queuedWhileRunning.await()
-            ran += "task"
-            context.scheduleNext { ran += "follow-up" }
-        }
-        queuedTaskRan.await(5, TimeUnit.SECONDS) shouldBe true
-        ran.toList() shouldBe listOf("task", "follow-up", "queued task")
-
-        context.call {
-            ran += "call"
-            context.scheduleNext { ran += "call's follow-up" }
-        }
-        context.call { ran.takeLast(2) } shouldBe listOf("call", "call's follow-up")
-        context.close()
-    }
-
-    test("a follow-up asked for outside the kernel context runs as a task of its own") {
-        val context = RealTimeKernelContext()
-        val ran = mutableListOf<String>()
-        context.scheduleNext { ran += "follow-up" }
-
-        context.call { ran.toList() } shouldBe listOf("follow-up")
-        context.close()
     }
 })

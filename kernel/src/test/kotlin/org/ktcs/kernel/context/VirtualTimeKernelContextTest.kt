@@ -29,23 +29,4 @@ class VirtualTimeKernelContextTest : FunSpec({
         context.elapsedMillis() shouldBe 30
         context.pendingTasks() shouldBe 1
     }
-
-    test("a follow-up runs right after its task, ahead of tasks already due; one asked for by a follow-up queues") {
-        val context = VirtualTimeKernelContext()
-        val ran = mutableListOf<String>()
-        context.schedule(10) {
-            ran += "task"
-            context.scheduleNext {
-                ran += "follow-up"
-                context.scheduleNext { ran += "follow-up's follow-up" }
-            }
-            context.scheduleNext { ran += "second follow-up" }.cancel()
-        }
-        context.schedule(10) { ran += "queued task" }
-
-        context.runUntilIdle()
-
-        ran shouldBe listOf("task", "follow-up", "queued task", "follow-up's follow-up")
-        context.elapsedMillis() shouldBe 10
-    }
 })

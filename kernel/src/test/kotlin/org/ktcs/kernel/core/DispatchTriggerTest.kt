@@ -61,26 +61,6 @@ class DispatchTriggerTest : FunSpec({
         dispatcher.runsAt shouldBe listOf(5L)
     }
 
-    test("a vehicle's request runs the dispatcher right after its task, ahead of the driver reports already due") {
-        val context = VirtualTimeKernelContext()
-        val ran = mutableListOf<String>()
-        val dispatcher = object : Dispatcher {
-            override fun dispatch() {
-                ran += "dispatcher"
-            }
-        }
-        val trigger = DispatchTrigger(context, { dispatcher }, periodMillis = 0, newOrderDelayMillis = 10)
-
-        context.schedule(5) {
-            ran += "vehicle became free"
-            trigger.requestForVehicle()
-        }
-        repeat(3) { context.schedule(5) { ran += "report" } }
-        context.runUntilTime(100)
-
-        ran shouldBe listOf("vehicle became free", "dispatcher", "report", "report", "report")
-    }
-
     class RecordingDispatcher : IncrementalDispatcher {
         val runs = mutableListOf<String>()
 
