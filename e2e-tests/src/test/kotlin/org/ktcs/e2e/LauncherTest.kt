@@ -132,6 +132,8 @@ class LauncherTest : FunSpec({
                     "kernel_cpu_s",
                     "assign_latency_p50_ms",
                     "assign_latency_p99_ms",
+                    "assign_wait_p99_ms",
+                    "dispatch_run_p99_ms",
                     "route_p50_ms",
                     "route_p99_ms",
                     "deadlocks_detected",

@@ -1,6 +1,7 @@
 package org.ktcs.kernel.simulation
 
 import org.koin.dsl.module
+import org.ktcs.api.dispatching.Dispatcher
 import org.ktcs.api.event.KernelEvent
 import org.ktcs.api.event.TransportOrderEvent
 import org.ktcs.api.event.VehicleEvent
@@ -9,10 +10,12 @@ import org.ktcs.api.order.Destination
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.api.routing.Router
+import org.ktcs.extension.KernelDefaults
 import org.ktcs.extension.KtcsExtension
 import org.ktcs.extension.config.KtcsConfig
 import org.ktcs.kernel.context.RealTimeKernelContext
 import org.ktcs.kernel.context.VirtualTimeKernelContext
+import org.ktcs.kernel.dispatching.DefaultDispatcher
 import org.ktcs.kernel.dispatching.VehicleAvailability
 import org.ktcs.kernel.routerConfiguration
 import org.ktcs.kernel.routing.DefaultRouter
@@ -62,11 +65,23 @@ class SimulationRunner(
 
     fun run(): SimulationReport {
         val router = TimedRouter(DefaultRouter(routerConfiguration(config)))
-        val overrides = module { single<Router> { router } }
         val clock = if (realTime) RealTimeKernelContext() else VirtualTimeKernelContext()
+        var dispatcher: TimedDispatcher? = null
+        val overrides = module {
+            single<Router> { router }
+            // The default dispatcher timed, also inside an extension's dispatcher that wraps it.
+            single<KernelDefaults> {
+                val scope = this
+                object : KernelDefaults {
+                    override fun dispatcher(): Dispatcher =
+                        TimedDispatcher(DefaultDispatcher(scope.get(), scope.get(), scope.get()), clock::elapsedMillis)
+                            .also { dispatcher = it }
+                }
+            }
+        }
         SimulationKernel(model, config, extensions.map { it.module() } + overrides, clock).use { kernel ->
             val audit = AllocationAudit()
-            val latencies = AssignLatencies(kernel)
+            val latencies = AssignLatencies(kernel) { dispatcher?.runStartedAt }
             val ledger = VehicleTimeLedger(
                 kernel.clock::elapsedMillis,
                 timeFactor,
@@ -108,6 +123,9 @@ class SimulationRunner(
                 report(kernel, (kernel.clock.elapsedMillis() - startMillis) * timeFactor / 1000.0, cpu / 1e9).copy(
                     wallSeconds = (System.nanoTime() - wallStart) / 1e9,
                     assignLatencyMillis = Percentiles.of(latencies.millis),
+                    assignWaitMillis = Percentiles.of(latencies.waitMillis),
+                    dispatchRunMillis = Percentiles.of(dispatcher?.durationsNanos.orEmpty().map { it / 1e6 }),
+                    dispatchRuns = dispatcher?.durationsNanos?.size ?: 0,
                     firstWaveAssignments = latencies.firstWave,
                     firstWaveMillis = latencies.firstWaveMillis,
                     routeMillis = Percentiles.of(router.durationsNanos.map { it / 1e6 }),
@@ -185,12 +203,16 @@ class SimulationRunner(
  * are ready at that same moment, and the dispatcher's assignments of that wave follow one another, the last one
  * waiting for all before it. Their latencies measure the dispatcher's throughput ([firstWaveMillis], the time until the
  * wave's last assignment), not how fast it answers a vehicle that becomes free or an order that arrives ([millis]).
+ *
+ * [waitMillis] is the part of each latency spent before the dispatcher run that made the assignment started
+ * ([runStartedAt]: when the run under way started, `null` outside a run), the rest is spent in that run.
  */
-private class AssignLatencies(private val kernel: SimulationKernel) {
+private class AssignLatencies(private val kernel: SimulationKernel, private val runStartedAt: () -> Long?) {
     private val dispatchable = HashMap<String, Long>()
     private val idleSince = HashMap<String, Long>()
     private val availability = VehicleAvailability(kernel.core.orders::get, kernel.core.sequences::get)
     val millis = ArrayList<Double>()
+    val waitMillis = ArrayList<Double>()
     var postedAt = Long.MIN_VALUE
     var firstWave = 0
         private set
@@ -220,6 +242,7 @@ private class AssignLatencies(private val kernel: SimulationKernel) {
                 firstWaveMillis = maxOf(firstWaveMillis, now - postedAt)
             } else {
                 millis += (now - ready).toDouble()
+                waitMillis += ((runStartedAt() ?: now) - ready).coerceAtLeast(0).toDouble()
             }
         }
         if (order.state.isFinal) dispatchable.remove(order.name)
