@@ -45,7 +45,7 @@ class RestartWorkload(private val options: BenchOptions, private val figures: Fi
             Step(path.name, path.sourcePoint, path.destinationPoint, routeIndex = index)
         }
         val now = Instant.now()
-        StateStore.embedded(data).use { store ->
+        StateStore.embedded(data, synchronous = false).use { store ->
             val all = orders.next("Stored-Final-", options.storedFinal).map { it to true } +
                 orders.next("Stored-Open-", options.storedOpen).map { it to false }
             all.chunked(BATCH).forEach { batch ->
@@ -53,6 +53,7 @@ class RestartWorkload(private val options: BenchOptions, private val figures: Fi
                     batch.map { (order, final) ->
                         StoreChange.Put(StoreTable.TRANSPORT_ORDERS, order.name, stored(order, final, steps, now))
                     },
+                    flush = false,
                 )
             }
         }

@@ -60,7 +60,7 @@ class DurableState private constructor(
             val started = System.nanoTime()
             val url = config[PersistenceSettings.url]
             val store = if (url.isBlank()) {
-                StateStore.embedded(Path.of(config[KtcsSettings.dataDirectory]))
+                StateStore.embedded(Path.of(config[KtcsSettings.dataDirectory]), durability == Durability.COMMIT)
             } else {
                 StateStore.remote(url, config[PersistenceSettings.username], config[PersistenceSettings.password])
             }

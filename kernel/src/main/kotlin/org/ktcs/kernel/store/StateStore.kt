@@ -2,11 +2,8 @@ package org.ktcs.kernel.store
 
 import org.flywaydb.core.Flyway
 import org.slf4j.LoggerFactory
-import java.nio.channels.FileChannel
 import java.nio.file.Files
 import java.nio.file.Path
-import java.nio.file.StandardOpenOption
-import java.nio.file.attribute.BasicFileAttributes
 import java.sql.Connection
 import java.sql.DriverManager
 import java.sql.SQLException
@@ -18,8 +15,10 @@ import java.sql.SQLException
 class StateStore private constructor(
     private val connection: Connection,
     val description: String,
-    private val writeAheadLog: Path?,
+    private val flushCommits: Boolean,
 ) : StoreWriter {
+    private val embedded = connection.metaData.databaseProductName.contains("SQLite", ignoreCase = true)
+    private var flushing = flushCommits
     private val upserts = StoreTable.entries.associateWith { table ->
         connection.prepareStatement(
             "INSERT INTO ${table.sqlName} (name, body) VALUES (?, ?) ON CONFLICT (name) DO UPDATE SET body = excluded.body",
@@ -28,9 +27,6 @@ class StateStore private constructor(
     private val deletes = StoreTable.entries.associateWith {
         connection.prepareStatement("DELETE FROM ${it.sqlName} WHERE name = ?")
     }
-    override val commitsFlushed = writeAheadLog == null
-    private var logChannel: FileChannel? = null
-    private var logFile: Any? = null
 
     /**
      * Every row of [table], in the order the database stores them (no order by name: that would read a large table
@@ -56,11 +52,12 @@ class StateStore private constructor(
     }
 
     /**
-     * Writes [changes] in one transaction, in their order. SQLite (`synchronous=NORMAL`) leaves the commit in the
-     * operating system's cache until [flush]; PostgreSQL flushes every commit, as configured on its server.
+     * Writes [changes] in one transaction, in their order; with [flush] (and a store opened to flush its commits) the
+     * commit returns only once it is on the disk. PostgreSQL flushes every commit, as configured on its server.
      */
-    override fun write(changes: Collection<StoreChange>) {
+    override fun write(changes: Collection<StoreChange>, flush: Boolean) {
         try {
+            flushCommitIf(flush && flushCommits)
             changes.forEach(::stage)
             StoreTable.entries.forEach { table ->
                 upserts.getValue(table).executeBatch()
@@ -76,24 +73,17 @@ class StateStore private constructor(
         }
     }
 
-    /**
-     * Puts every commit [write] returned from on the disk: an fdatasync of SQLite's write-ahead log, whose frames a
-     * commit wrote into the file (SQLite replays the log's committed transactions after a power cut, checksummed, in
-     * order). It touches no connection, so it runs on its own thread while the next group is written; on PostgreSQL
-     * the commit itself was flushed.
-     */
-    override fun flush() {
-        val log = writeAheadLog ?: return
-        // SQLite keeps its log file while the connection is open; should it ever make a new one, that one is flushed.
-        val file = Files.readAttributes(log, BasicFileAttributes::class.java).fileKey()
-        val channel = logChannel?.takeIf { file == logFile } ?: FileChannel.open(log, StandardOpenOption.WRITE).also {
-            logChannel?.close()
-            // A new file's directory entry goes to the disk too, before a commit in it is reported durable.
-            syncDirectory(log.parent)
-            logChannel = it
-            logFile = file
+    /** SQLite's `synchronous`: FULL fsyncs the write-ahead log at each commit, NORMAL leaves that to a later one. */
+    private fun flushCommitIf(flush: Boolean) {
+        if (!embedded || flush == flushing) return
+        // SQLite refuses the change inside a transaction, and the driver keeps one open while autoCommit is off.
+        connection.autoCommit = true
+        try {
+            connection.createStatement().use { it.execute("PRAGMA synchronous=${if (flush) "FULL" else "NORMAL"}") }
+        } finally {
+            connection.autoCommit = false
         }
-        channel.force(false)
+        flushing = flush
     }
 
     private fun stage(change: StoreChange) {
@@ -127,7 +117,6 @@ class StateStore private constructor(
     }
 
     override fun close() {
-        runCatching { logChannel?.close() }
         runCatching { connection.close() }
     }
 
@@ -141,7 +130,7 @@ class StateStore private constructor(
         fun notificationKey(number: Long): String = "%019d".format(number.coerceAtLeast(0))
 
         /** The embedded store in [directory], created if there is none. */
-        fun embedded(directory: Path): StateStore {
+        fun embedded(directory: Path, synchronous: Boolean): StateStore {
             val file = directory.resolve(FILE_NAME)
             val existed = Files.exists(file)
             Files.createDirectories(directory)
@@ -153,8 +142,7 @@ class StateStore private constructor(
                     statement.execute("PRAGMA busy_timeout=$BUSY_TIMEOUT_MILLIS")
                     checkIntegrity(statement, description)
                     statement.execute("PRAGMA journal_mode=WAL")
-                    // Commits are not flushed by SQLite: flush() does it, for the commits clients wait for.
-                    statement.execute("PRAGMA synchronous=NORMAL")
+                    statement.execute("PRAGMA synchronous=${if (synchronous) "FULL" else "NORMAL"}")
                     // SQLite checkpoints the WAL into the file every 1,000 pages but keeps the WAL at its largest size;
                     // this cuts it back after a large write (a restart's recovery, a replaced model).
                     statement.execute("PRAGMA journal_size_limit=$WAL_SIZE_LIMIT_BYTES")
@@ -163,14 +151,13 @@ class StateStore private constructor(
                 connection.close()
                 throw unreadable(description, error, existed)
             }
-            val log = file.resolveSibling("${file.fileName}-wal")
-            return open(connection, description, "jdbc:sqlite:$file", "", "", existed, log)
+            return open(connection, description, "jdbc:sqlite:$file", "", "", existed, synchronous)
         }
 
         /** The store at a JDBC [url] (PostgreSQL), its schema created or migrated if needed. */
         fun remote(url: String, user: String, password: String): StateStore {
             val description = "the state store at $url"
-            return open(connect(description, url, user, password, true), description, url, user, password, true, null)
+            return open(connect(description, url, user, password, true), description, url, user, password, true, true)
         }
 
         private fun connect(description: String, url: String, user: String, password: String, existed: Boolean) =
@@ -187,12 +174,12 @@ class StateStore private constructor(
             user: String,
             password: String,
             existed: Boolean,
-            writeAheadLog: Path?,
+            flushCommits: Boolean,
         ): StateStore = try {
             StoreSchema.ensure(connection, description) { migrate(url, user, password) }
             lockForThisKtcs(connection, description)
             connection.autoCommit = false
-            StateStore(connection, description, writeAheadLog)
+            StateStore(connection, description, flushCommits)
         } catch (error: SQLException) {
             connection.close()
             throw unreadable(description, error, existed)
@@ -234,11 +221,6 @@ class StateStore private constructor(
                 SCHEMA_VERSION,
                 (System.nanoTime() - started) / 1_000_000,
             )
-        }
-
-        /** Where a directory can be opened (Linux, macOS), its entries go to the disk; elsewhere that is a no-op. */
-        private fun syncDirectory(directory: Path) {
-            runCatching { FileChannel.open(directory, StandardOpenOption.READ).use { it.force(true) } }
         }
 
         private fun checkIntegrity(statement: java.sql.Statement, description: String) {

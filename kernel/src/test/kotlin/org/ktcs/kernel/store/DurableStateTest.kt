@@ -199,12 +199,12 @@ class DurableStateTest : FunSpec({
     test("a group that fails to be written leaves nothing of it in the store, and the next one is written alone") {
         val directory = tempStore()
         fun lock(name: String, value: Any) = StoreChange.Put(StoreTable.PLANT_LOCKS, name, value)
-        StateStore.embedded(directory).use { store ->
+        StateStore.embedded(directory, synchronous = true).use { store ->
             // A value the codec cannot write fails the group after its first row was staged.
             shouldThrow<Exception> {
-                store.write(listOf(lock("Path-1", StoredLock(StoredLock.PATH, true)), lock("Path-2", Any())))
+                store.write(listOf(lock("Path-1", StoredLock(StoredLock.PATH, true)), lock("Path-2", Any())), true)
             }
-            store.write(listOf(lock("Path-3", StoredLock(StoredLock.PATH, true))))
+            store.write(listOf(lock("Path-3", StoredLock(StoredLock.PATH, true))), true)
             val names = mutableListOf<String>()
             store.rows(StoreTable.PLANT_LOCKS) { chunk -> chunk.forEach { names += it.first } }
             names shouldBe listOf("Path-3")

@@ -1,19 +1,18 @@
 package org.ktcs.kernel.store
 
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.longs.shouldBeGreaterThan
 import io.kotest.matchers.longs.shouldBeLessThan
 import io.kotest.matchers.shouldBe
-import io.kotest.matchers.string.shouldContain
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeout
 import java.util.concurrent.TimeUnit
 
 /**
- * The journal flushes (fsyncs) what a client waits for: the kernel's own changes are committed without, a client's
- * change the writer had already committed unflushed is flushed once the client marks it, and the writer commits the
- * next requests while a flush runs.
+ * The journal flushes (fsyncs) exactly the commits a client waits for: the kernel's own changes are committed
+ * without, and a client's change the writer had already committed unflushed is flushed once the client marks it.
  */
 class StateJournalTest : FunSpec({
     fun put(name: String) = StoreChange.Put(StoreTable.PLANT_LOCKS, name, StoredLock(StoredLock.PATH, true))
@@ -27,10 +26,10 @@ class StateJournalTest : FunSpec({
             val mark = journal.mark()
             runBlocking { withTimeout(5_000) { journal.awaitCommitted(mark) } }
 
-            store.events.first() shouldBe "write kernel-change"
-            // The client's change was committed with the kernel's or after it, and flushed after that.
-            store.events.last() shouldBe "flush"
-            store.events.dropLast(1).last() shouldContain "client-change"
+            store.writes.first() shouldBe (listOf("kernel-change") to false)
+            // The client's change went in a flushed commit, or in one before the flushed one that followed its mark.
+            store.writes.flatMap { it.first } shouldContain "client-change"
+            store.writes.last().second shouldBe true
         }
     }
 
@@ -42,7 +41,8 @@ class StateJournalTest : FunSpec({
             val mark = journal.mark()
             runBlocking { withTimeout(5_000) { journal.awaitCommitted(mark) } }
 
-            store.events shouldContainExactly listOf("write client-change", "flush")
+            store.writes.map { it.second } shouldContainExactly listOf(false, true)
+            store.writes.last().first shouldBe listOf("lastFlush")
         }
     }
 
@@ -63,8 +63,7 @@ class StateJournalTest : FunSpec({
             wakes.size shouldBe 1
             wakes.poll()()
             answered.await(5, TimeUnit.SECONDS) shouldBe true
-            store.writes.single() shouldBe (0 until 8).map { "order-$it" }
-            store.events.last() shouldBe "flush"
+            store.writes.single() shouldBe ((0 until 8).map { "order-$it" } to true)
         }
     }
 
@@ -98,7 +97,10 @@ class StateJournalTest : FunSpec({
                 store.writes.size shouldBe 1
                 requests(listOf("second-3"), second)
                 second.await(5, TimeUnit.SECONDS) shouldBe true
-                store.writes shouldBe listOf((1..3).map { "first-$it" }, (1..3).map { "second-$it" })
+                store.writes shouldBe listOf(
+                    (1..3).map { "first-$it" } to true,
+                    (1..3).map { "second-$it" } to true,
+                )
             }
     }
 
@@ -127,7 +129,7 @@ class StateJournalTest : FunSpec({
             wake()
             fourth.await(5, TimeUnit.SECONDS) shouldBe true
             (System.nanoTime() - alone) shouldBeLessThan 150_000_000L
-            store.writes shouldBe listOf(listOf("a", "b"), listOf("c"), listOf("d"))
+            store.writes.map { it.first } shouldBe listOf(listOf("a", "b"), listOf("c"), listOf("d"))
         }
     }
 
@@ -146,69 +148,23 @@ class StateJournalTest : FunSpec({
             answered.await(500, TimeUnit.MILLISECONDS) shouldBe false
             answered.count shouldBe 3
             answered.await(5, TimeUnit.SECONDS) shouldBe true
-            store.writes.single() shouldBe (1..3).map { "order-$it" }
+            store.writes.single() shouldBe ((1..3).map { "order-$it" } to true)
         }
     }
 
-    test("a request is answered only once the flush after the commit holding its change returned from the disk") {
+    test("a request is answered only once the commit holding its change returned from the disk") {
         val store = RecordingStore()
         val onDisk = java.util.concurrent.CountDownLatch(1)
-        store.beforeFlush = { onDisk.await() }
+        store.beforeWrite = { onDisk.await() }
         StateJournal(store, waitForCommit = true).use { journal ->
             val answered = java.util.concurrent.CountDownLatch(1)
             journal.append(put("order"))
             journal.whenCommitted(journal.mark()) { answered.countDown() }
 
-            store.awaitWrites(1)
             answered.await(300, TimeUnit.MILLISECONDS) shouldBe false
             onDisk.countDown()
             answered.await(5, TimeUnit.SECONDS) shouldBe true
-            store.events shouldContainExactly listOf("write order", "flush")
-        }
-    }
-
-    test("while a flush runs the writer commits the next requests, and one flush puts all of them on the disk") {
-        val store = RecordingStore()
-        val flushing = java.util.concurrent.Semaphore(0)
-        val onDisk = java.util.concurrent.Semaphore(0)
-        store.beforeFlush = {
-            flushing.release()
-            onDisk.acquire()
-        }
-        StateJournal(store, waitForCommit = true).use { journal ->
-            fun requests(vararg names: String): List<java.util.concurrent.CountDownLatch> {
-                names.forEach { journal.append(put(it)) } // queued in the kernel together, then each marked
-                return names.map {
-                    java.util.concurrent.CountDownLatch(1).also { answered ->
-                        journal.whenCommitted(journal.mark()) { answered.countDown() }
-                    }
-                }
-            }
-            val first = requests("first").single()
-            flushing.tryAcquire(5, TimeUnit.SECONDS) shouldBe true
-            val next = requests("second", "third")
-            store.awaitWrites(2) // written while the first flush is still on its way to the disk
-            store.writes.size shouldBe 2
-            first.count shouldBe 1
-            onDisk.release()
-            first.await(5, TimeUnit.SECONDS) shouldBe true
-            flushing.tryAcquire(5, TimeUnit.SECONDS) shouldBe true
-            next.forEach { it.count shouldBe 1 }
-            onDisk.release()
-            next.forEach { it.await(5, TimeUnit.SECONDS) shouldBe true }
-            // The second commit was written while the first flush ran (each flush is recorded once it returned).
-            store.events shouldContainExactly listOf("write first", "write second third", "flush", "flush")
-        }
-    }
-
-    test("with a store whose commits are on the disk already (PostgreSQL) the writer answers after the commit") {
-        val store = RecordingStore(commitsFlushed = true)
-        StateJournal(store, waitForCommit = true).use { journal ->
-            journal.append(put("order"))
-            val mark = journal.mark()
-            runBlocking { withTimeout(5_000) { journal.awaitCommitted(mark) } }
-
-            store.events shouldContainExactly listOf("write order")
+            store.writes.single() shouldBe (listOf("order") to true)
         }
     }
 
@@ -221,23 +177,7 @@ class StateJournalTest : FunSpec({
             journal.whenCommitted(journal.mark()) { answered.countDown() }
         } // close() gives the failing store a few retries, then stops
         answered.await(200, TimeUnit.MILLISECONDS) shouldBe false
-        store.events shouldBe emptyList()
-    }
-
-    test("a failed flush has the commits it should have put on the disk written again, then answers them") {
-        val store = RecordingStore()
-        val failures = java.util.concurrent.atomic.AtomicInteger(1)
-        store.beforeFlush = { if (failures.getAndDecrement() > 0) throw java.io.IOException("I/O error") }
-        StateJournal(store, waitForCommit = true).use { journal ->
-            val answered = java.util.concurrent.CountDownLatch(1)
-            journal.append(put("order"))
-            journal.whenCommitted(journal.mark()) { answered.countDown() }
-
-            answered.await(500, TimeUnit.MILLISECONDS) shouldBe false
-            answered.await(5, TimeUnit.SECONDS) shouldBe true
-            // The first flush failed: the operating system may have dropped the commit, so it was written again.
-            store.events shouldContainExactly listOf("write order", "flush failed", "write order", "flush")
-        }
+        store.writes shouldBe emptyList()
     }
 
     test("with ASYNC durability nothing is flushed and nothing waits") {
@@ -246,36 +186,21 @@ class StateJournalTest : FunSpec({
             journal.append(put("client-change"))
             journal.mark() shouldBe 0
             store.awaitWrites(1)
-            Thread.sleep(50)
-            store.events shouldContainExactly listOf("write client-change")
+            store.writes.single().second shouldBe false
         }
     }
 })
 
-/** Records each write's row names and each flush, in the order they happened. */
-private class RecordingStore(override val commitsFlushed: Boolean = false) : StoreWriter {
-    val events: MutableList<String> = java.util.Collections.synchronizedList(mutableListOf())
-    val writes: MutableList<List<String>> = java.util.Collections.synchronizedList(mutableListOf())
+/** Records each write's row names and whether it was flushed. */
+private class RecordingStore : StoreWriter {
+    val writes: MutableList<Pair<List<String>, Boolean>> = java.util.Collections.synchronizedList(mutableListOf())
     private val counted = java.util.concurrent.Semaphore(0)
     var beforeWrite: () -> Unit = {}
-    var beforeFlush: () -> Unit = {}
 
-    override fun write(changes: Collection<StoreChange>) {
+    override fun write(changes: Collection<StoreChange>, flush: Boolean) {
         beforeWrite()
-        val names = changes.map { it.rowName }
-        writes += names
-        events += "write ${names.joinToString(" ")}"
+        writes += changes.map { it.rowName } to flush
         counted.release()
-    }
-
-    override fun flush() {
-        try {
-            beforeFlush()
-        } catch (error: java.io.IOException) {
-            events += "flush failed"
-            throw error
-        }
-        events += "flush"
     }
 
     override fun trimNotifications(newest: Long, keep: Int) = Unit
