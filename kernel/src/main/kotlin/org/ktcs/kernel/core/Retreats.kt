@@ -25,13 +25,9 @@ internal class Retreats(private val kernel: KernelCore) {
         checks++
         scheduler.retryOverdue()
         if (lastSent.size > 64) lastSent.values.removeIf { checks - it >= COOLDOWN_CHECKS }
-        val candidates = scheduler.retreats()
-        if (candidates.isEmpty()) return false
-        val allocations = scheduler.allocations()
-        return candidates.any { (vehicle, park) ->
-            val coolingDown = lastSent[vehicle]?.let { checks - it < COOLDOWN_CHECKS } == true
-            !coolingDown && send(vehicle, park, allocations, "held back")
-        }
+        val allocations by lazy(LazyThreadSafetyMode.NONE) { scheduler.allocations() }
+        val ready = { vehicle: String -> lastSent[vehicle]?.let { checks - it < COOLDOWN_CHECKS } != true }
+        return scheduler.retreats(ready).any { (vehicle, park) -> send(vehicle, park, allocations, "held back") }
     }
 
     /** Sends one vehicle of a deadlock that no reroute breaks on through a free park point it reaches now. */

@@ -215,13 +215,17 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     /**
      * The clients held back for longer than two watchdog periods that could retreat now, each with the nearest free
      * park point it reaches over free points, longest held back first: how the watchdog gets a fleet moving again
-     * that deadlock avoidance holds back in a safe state.
+     * that deadlock avoidance holds back in a safe state. Lazy: each retreat point is searched for only when the
+     * caller gets to it (the watchdog sends one retreat per check), and only for clients [eligible] accepts.
      */
-    fun retreats(): List<Pair<String, String>> {
+    fun retreats(eligible: (String) -> Boolean): Sequence<Pair<String, String>> {
         val now = clock.elapsedMillis()
         return deferred.filter { now - (deferredSince[it.seq] ?: now) >= HELD_BACK_REPORT_MILLIS }
             .sortedBy { deferredSince[it.seq] }
-            .mapNotNull { request -> parks.retreatPoint(request.client.name)?.let { request.client.name to it } }
+            .asSequence()
+            .map { it.client.name }
+            .filter(eligible)
+            .mapNotNull { client -> parks.retreatPoint(client)?.let { client to it } }
     }
 
     /** The nearest free park point [client] reaches now over points nobody holds, or null. */

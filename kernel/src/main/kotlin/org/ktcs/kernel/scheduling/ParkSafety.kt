@@ -80,15 +80,15 @@ internal class ParkSafety(model: PlantModel) {
         val held = BooleanArray(names.size)
         for (standing in fleet) standing.points.forEach { held[it] = true }
         val seen = BooleanArray(names.size)
-        val queue = ArrayDeque<Int>()
+        val queue = IntQueue()
         seen[vehicle.front] = true
-        queue += vehicle.front
+        queue.push(vehicle.front)
         while (queue.isNotEmpty()) {
-            for (next in successors[queue.removeFirst()]) {
+            for (next in successors[queue.take()]) {
                 if (seen[next] || held[next]) continue
                 if (isPark[next]) return names[next]
                 seen[next] = true
-                queue += next
+                queue.push(next)
             }
         }
         return null
