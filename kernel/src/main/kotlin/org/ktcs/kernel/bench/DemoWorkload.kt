@@ -72,6 +72,7 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
         val stats = ktcs.stats
         val cpuStart = stats?.cpuSeconds()
         val threadStart = stats?.threadCpuSeconds(KERNEL_THREAD)
+        val threadsStart = stats?.threads()
         val wallStart = System.nanoTime()
         OrderPosting.post(ktcs.client, batch, 1)
         val states = OrderPosting.awaitFinal(ktcs.client, batch.map { it.name }, options.stallSeconds)
@@ -84,6 +85,11 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
         if (thread != null && threadStart != null) {
             figures.record("kernel_thread_cpu_per_order_${size}_ms", (thread - threadStart) * MILLIS / finished)
         }
+        threadsStart?.let { start ->
+            ThreadCpu.byKind(start, stats.threads()).take(THREAD_KINDS_SHOWN).forEach { (kind, seconds) ->
+                figures.record("kernel_cpu_per_order_${size}_ms.$kind", seconds * MILLIS / finished)
+            }
+        }
     }
 
     private fun record(name: String, result: PostingResult) {
@@ -93,24 +99,39 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
         figures.record("${name}_client_cpu_share", result.clientCpuSeconds / result.wallSeconds)
     }
 
+    /**
+     * `GET /v1/transportOrders` timed with the JDK's client (figures without a suffix) and, if the lean client is
+     * measured, with it too (`_raw`): reading megabytes through the JDK's client takes it longer than kTCS takes to
+     * answer, and the lean client's figure is kTCS's.
+     */
     private fun listOrders(ktcs: KtcsUnderTest) {
+        timedList(ktcs, "") { ktcs.client.getDiscarding("/transportOrders") }
+        if (ClientKind.RAW in options.clientKinds && ktcs.client.baseUrl.startsWith("http:")) {
+            val request = RawHttpConnection.getRequest(ktcs.client.baseUrl, "/transportOrders")
+            RawHttpConnection(ktcs.client.baseUrl).use { connection ->
+                timedList(ktcs, "_raw") { connection.exchangeDiscarding(request) }
+            }
+        }
+        figures.record("get_orders_pool", countOrders(ktcs).toDouble())
+    }
+
+    private fun timedList(ktcs: KtcsUnderTest, suffix: String, get: () -> Long) {
         val latencies = ArrayList<Double>()
         var bytes = 0L
         val cpuStart = ktcs.stats?.cpuSeconds()
         repeat(options.gets) {
             val start = System.nanoTime()
-            bytes = ktcs.client.getDiscarding("/transportOrders")
+            bytes = get()
             latencies += (System.nanoTime() - start) / OrderPosting.NANOS_PER_MILLI
         }
         val cpuEnd = ktcs.stats?.cpuSeconds()
         if (cpuStart != null && cpuEnd != null && options.gets > 0) {
             // kTCS's share of a GET's latency: the rest is the client reading megabytes, and the machine.
-            figures.record("get_orders_cpu_ms", (cpuEnd - cpuStart) * MILLIS / options.gets)
+            figures.record("get_orders_cpu${suffix}_ms", (cpuEnd - cpuStart) * MILLIS / options.gets)
         }
-        figures.record("get_orders_pool", countOrders(ktcs).toDouble())
-        figures.record("get_orders_bytes", bytes.toDouble())
-        figures.record("get_orders_p50_ms", quantile(latencies, MEDIAN))
-        figures.record("get_orders_p95_ms", quantile(latencies, P95))
+        figures.record("get_orders_bytes$suffix", bytes.toDouble())
+        figures.record("get_orders_p50${suffix}_ms", quantile(latencies, MEDIAN))
+        figures.record("get_orders_p95${suffix}_ms", quantile(latencies, P95))
     }
 
     /** `GET` of an order that does not exist, on one keep-alive connection of an idle kTCS: latency and CPU. */
@@ -144,7 +165,7 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
         private const val CLIENTS_NOTE = "create_*/post_p50 without a suffix: the JDK's HttpClient; " +
             "*_raw: the bench's lean client (keep-alive sockets, requests encoded beforehand)"
         const val CONCURRENT_CLIENTS = 8
-        private const val THREAD_KINDS_SHOWN = 4
+        private const val THREAD_KINDS_SHOWN = 6
         private const val MILLIS = 1000.0
         private const val MEDIAN = 0.5
         private const val P95 = 0.95

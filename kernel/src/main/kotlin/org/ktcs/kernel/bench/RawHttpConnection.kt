@@ -27,9 +27,36 @@ class RawHttpConnection(baseUrl: String) : AutoCloseable {
     private val input: InputStream = BufferedInputStream(socket.getInputStream(), BUFFER_BYTES)
     private val output: OutputStream = socket.getOutputStream()
     private val line = StringBuilder()
+    private val discardBuffer by lazy { ByteArray(DISCARD_BUFFER_BYTES) }
 
     /** Sends [request] (from [postRequest] or [getRequest]) and reads the answer; returns its status code and body. */
     fun exchange(request: ByteArray): Answer {
+        val head = send(request)
+        val body = when {
+            head.chunked -> readChunked()
+            else -> readExactly(head.length)
+        }
+        return Answer(head.status, body)
+    }
+
+    /**
+     * Sends [request] and reads the answer's body into one reused buffer, as a client that parses while it reads
+     * would; returns the body's length in bytes. Fails on any status but 200.
+     */
+    fun exchangeDiscarding(request: ByteArray): Long {
+        val head = send(request)
+        check(head.status == HTTP_OK) { "kTCS answered ${head.status}" }
+        if (head.chunked) return readChunked().size.toLong()
+        var left = head.length
+        while (left > 0) {
+            val n = input.read(discardBuffer, 0, minOf(left, discardBuffer.size))
+            if (n < 0) throw IOException("kTCS closed the connection in the middle of an answer")
+            left -= n
+        }
+        return head.length.toLong()
+    }
+
+    private fun send(request: ByteArray): Head {
         output.write(request)
         output.flush()
         val status = readLine().split(' ', limit = STATUS_PARTS).getOrNull(1)?.toIntOrNull()
@@ -44,13 +71,11 @@ class RawHttpConnection(baseUrl: String) : AutoCloseable {
             if (name.equals("Content-Length", ignoreCase = true)) length = value.toInt()
             if (name.equals("Transfer-Encoding", ignoreCase = true) && value.contains("chunked", true)) chunked = true
         }
-        val body = when {
-            chunked -> readChunked()
-            length >= 0 -> readExactly(length)
-            else -> throw IOException("kTCS answered without Content-Length on a keep-alive connection")
-        }
-        return Answer(status, body)
+        if (!chunked && length < 0) throw IOException("kTCS answered without Content-Length on a keep-alive connection")
+        return Head(status, length, chunked)
     }
+
+    private class Head(val status: Int, val length: Int, val chunked: Boolean)
 
     override fun close() = socket.close()
 
@@ -98,6 +123,8 @@ class RawHttpConnection(baseUrl: String) : AutoCloseable {
         private const val BUFFER_BYTES = 16 * 1024
         private const val STATUS_PARTS = 3
         private const val HEX = 16
+        private const val HTTP_OK = 200
+        private const val DISCARD_BUFFER_BYTES = 64 * 1024
 
         /** The bytes of a `GET` of [path] under [baseUrl]'s path, for a keep-alive connection. */
         fun getRequest(baseUrl: String, path: String): ByteArray {

@@ -56,6 +56,29 @@ class RawHttpConnectionTest : FunSpec({
         }
     }
 
+    test("a discarded answer counts its whole body, larger than the buffer, and the next answer follows it") {
+        ServerSocket(0).use { server ->
+            val large = "x".repeat(200_000)
+            val answers = listOf(
+                "HTTP/1.1 200 OK\r\nContent-Length: ${large.length}\r\n\r\n$large",
+                "HTTP/1.1 200 OK\r\nTransfer-Encoding: chunked\r\n\r\n3\r\nabc\r\n0\r\n\r\n",
+                "HTTP/1.1 200 OK\r\nContent-Length: 2\r\n\r\nok",
+                "HTTP/1.1 404 Not Found\r\nContent-Length: 0\r\n\r\n",
+            )
+            val serving = serve(server, answers, StringBuilder())
+            val base = "http://127.0.0.1:${server.localPort}/v1"
+            RawHttpConnection(base).use { connection ->
+                val get = RawHttpConnection.getRequest(base, "/transportOrders")
+                connection.exchangeDiscarding(get) shouldBe 200_000L
+                connection.exchangeDiscarding(get) shouldBe 3L
+                String(connection.exchange(get).body) shouldBe "ok"
+                shouldThrow<IllegalStateException> { connection.exchangeDiscarding(get) }.message shouldBe
+                    "kTCS answered 404"
+            }
+            serving.join()
+        }
+    }
+
     test("an HTTPS kTCS is refused with the client that can talk to it") {
         shouldThrow<IllegalArgumentException> { RawHttpConnection("https://127.0.0.1:1/v1") }.message shouldBe
             "the raw client speaks plain HTTP, not https: use --client jdk"
