@@ -2,6 +2,7 @@ package org.ktcs.kernel.store
 
 import org.slf4j.LoggerFactory
 import java.util.PriorityQueue
+import java.util.concurrent.Executor
 import java.util.concurrent.locks.ReentrantLock
 import kotlin.concurrent.thread
 import kotlin.concurrent.withLock
@@ -83,8 +84,10 @@ class StateJournal(
         return mark
     }
 
-    override fun whenCommitted(mark: Long, committed: () -> Unit) {
-        val now = lock.withLock { (flushed >= mark).also { if (!it) waiting += Waiter(mark, committed) } }
+    override fun whenCommitted(mark: Long, committed: () -> Unit) = whenCommitted(mark, null, committed)
+
+    override fun whenCommitted(mark: Long, answerOn: Executor?, committed: () -> Unit) {
+        val now = lock.withLock { (flushed >= mark).also { if (!it) waiting += Waiter(mark, answerOn, committed) } }
         if (now) committed()
     }
 
@@ -161,10 +164,13 @@ class StateJournal(
             groupDeadline = System.nanoTime() + groupNanos
         }
         counts.requests += answered.size
-        answered.forEach { it.committed() }
+        // One task per event loop answers all of its requests: a hand-off (and a wake-up) per loop, not per request.
+        answered.groupBy { it.answerOn }.forEach { (loop, group) ->
+            if (loop == null) group.forEach { it.committed() } else loop.execute { group.forEach { it.committed() } }
+        }
     }
 
-    private class Waiter(val mark: Long, val committed: () -> Unit)
+    private class Waiter(val mark: Long, val answerOn: Executor?, val committed: () -> Unit)
 
     /** How much the writer grouped: what a benchmark's log shows of the group commit. */
     private class Counts {
