@@ -2,7 +2,6 @@ package org.ktcs.kernel.store
 
 import org.slf4j.LoggerFactory
 import java.util.PriorityQueue
-import java.util.concurrent.Executor
 import java.util.concurrent.locks.ReentrantLock
 import kotlin.concurrent.thread
 import kotlin.concurrent.withLock
@@ -84,10 +83,8 @@ class StateJournal(
         return mark
     }
 
-    override fun whenCommitted(mark: Long, committed: () -> Unit) = whenCommitted(mark, null, committed)
-
-    override fun whenCommitted(mark: Long, answerOn: Executor?, committed: () -> Unit) {
-        val now = lock.withLock { (flushed >= mark).also { if (!it) waiting += Waiter(mark, answerOn, committed) } }
+    override fun whenCommitted(mark: Long, committed: () -> Unit) {
+        val now = lock.withLock { (flushed >= mark).also { if (!it) waiting += Waiter(mark, committed) } }
         if (now) committed()
     }
 
@@ -164,13 +161,10 @@ class StateJournal(
             groupDeadline = System.nanoTime() + groupNanos
         }
         counts.requests += answered.size
-        // One task per event loop answers all of its requests: a hand-off (and a wake-up) per loop, not per request.
-        answered.groupBy { it.answerOn }.forEach { (loop, group) ->
-            if (loop == null) group.forEach { it.committed() } else loop.execute { group.forEach { it.committed() } }
-        }
+        answered.forEach { it.committed() }
     }
 
-    private class Waiter(val mark: Long, val answerOn: Executor?, val committed: () -> Unit)
+    private class Waiter(val mark: Long, val committed: () -> Unit)
 
     /** How much the writer grouped: what a benchmark's log shows of the group commit. */
     private class Counts {

@@ -168,30 +168,6 @@ class StateJournalTest : FunSpec({
         }
     }
 
-    test("a flushed commit answers the requests of each event loop in one task on that loop") {
-        val store = RecordingStore()
-        val wakes = java.util.concurrent.LinkedBlockingQueue<() -> Unit>()
-        StateJournal(store, waitForCommit = true, gatherNanos = 60_000_000_000L, later = wakes::add).use { journal ->
-            val loops = listOf(RecordingLoop(), RecordingLoop())
-            val answered = java.util.concurrent.CopyOnWriteArrayList<String>()
-            repeat(5) { request ->
-                journal.append(put("order-$request"))
-                journal.whenCommitted(journal.mark(), loops[request % 2]) { answered += "order-$request" }
-            }
-            wakes.poll()()
-
-            val firstLoopsTask = loops[0].next()
-            val secondLoopsTask = loops[1].next()
-            store.writes.single() shouldBe ((0 until 5).map { "order-$it" } to true)
-            answered shouldBe emptyList() // nothing is answered on the writer's thread
-            loops.forEach { it.tasks.size shouldBe 0 } // one task per loop, not one per request
-            firstLoopsTask.run()
-            answered shouldContainExactly listOf("order-0", "order-2", "order-4")
-            secondLoopsTask.run()
-            answered shouldContainExactly listOf("order-0", "order-2", "order-4", "order-1", "order-3")
-        }
-    }
-
     test("a request whose change could not be written before the journal stopped is never answered") {
         val store = RecordingStore()
         store.beforeWrite = { throw java.sql.SQLException("disk full") }
@@ -235,15 +211,4 @@ private class RecordingStore : StoreWriter {
         check(counted.tryAcquire(count, 5, TimeUnit.SECONDS)) { "fewer than $count writes" }
         counted.release(count)
     }
-}
-
-/** An event loop that keeps the tasks handed to it until the test runs them. */
-private class RecordingLoop : java.util.concurrent.Executor {
-    val tasks = java.util.concurrent.LinkedBlockingQueue<Runnable>()
-
-    override fun execute(task: Runnable) {
-        tasks += task
-    }
-
-    fun next(): Runnable = checkNotNull(tasks.poll(5, TimeUnit.SECONDS)) { "no task handed to the loop" }
 }
