@@ -11,7 +11,6 @@ import org.ktcs.adapters.vda5050.protocol.IncomingTopic
 import org.ktcs.adapters.vda5050.protocol.InstantActions
 import org.ktcs.adapters.vda5050.protocol.MessageValidator
 import org.ktcs.adapters.vda5050.protocol.Order
-import org.ktcs.adapters.vda5050.protocol.OrderEncoder
 import org.ktcs.adapters.vda5050.protocol.State
 import org.ktcs.adapters.vda5050.protocol.StateRead
 import org.ktcs.adapters.vda5050.protocol.StateReader
@@ -45,7 +44,6 @@ internal class VehicleTopics(
     // The driver's log category: what a user turns up to watch a vehicle's messages covers these lines too.
     private val log = LoggerFactory.getLogger(Vda5050Driver::class.java)
     private val headerIds = HashMap<String, Long>() // only on [sending]'s thread, one at a time
-    private val orders = OrderEncoder() // likewise
 
     // State messages repeat most of the last one: what they repeat is not checked and decoded again.
     private val states = StateReader(properties.validateIncomingMessages)
@@ -103,7 +101,7 @@ internal class VehicleTopics(
             nextHeader("order"), timestamp(), Vda.PROTOCOL_VERSION, properties.manufacturer, properties.serialNumber,
             update.orderId, update.orderUpdateId, update.nodes, update.edges,
         )
-        publish(properties.order.name, properties.order.qos, orders.encode(message))
+        publish(properties.order.name, properties.order.qos, Vda5050Json.encodeToString(Order.serializer(), message))
         log.debug("vehicle {}: order {} update {}", vehicleName, update.orderId, update.orderUpdateId)
     }
 
