@@ -35,6 +35,23 @@ class StateReaderTest : FunSpec({
         third.nodeStates shouldNotBeSameInstanceAs first.nodeStates
     }
 
+    test("an element the last message's array had is reused; the new ones are checked and decoded, in order") {
+        val reader = StateReader(validate = true)
+        val longer = route + NodeState("Point-0004", 6, false)
+        val first = reader.read(json(state(1, longer))).shouldBeInstanceOf<StateRead.Valid>().state
+        // The vehicle passed Point-0002, and its horizon grew by one node.
+        val next = longer.drop(1) + NodeState("Point-0005", 8, false)
+        val second = reader.read(json(state(2, next))).shouldBeInstanceOf<StateRead.Valid>().state
+        second shouldBe state(2, next)
+        second.nodeStates[0] shouldBeSameInstanceAs first.nodeStates[1]
+        second.nodeStates[1] shouldBeSameInstanceAs first.nodeStates[2]
+        // A new element next to known ones is checked, and its problem names its place in the message as sent.
+        val badNew = String(json(state(3, next.take(2) + NodeState("Point-0006", 10, false))))
+            .replace("\"sequenceId\":10", "\"sequenceId\":\"ten\"")
+        reader.read(badNew.toByteArray()).shouldBeInstanceOf<StateRead.Invalid>().problems.single() shouldStartWith
+            "/nodeStates/2/sequenceId: "
+    }
+
     test("what changed is checked, also next to repeated arrays; an invalid message is not remembered") {
         val reader = StateReader(validate = true)
         reader.read(json(state(1, route))).shouldBeInstanceOf<StateRead.Valid>()
