@@ -85,6 +85,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         val taken = occupancy.take(client.name, request)
         lastGrants.remove(client.name)
         safety.standing(client.name)
+        parks.changed(client.name)
         process(pending.waitingFor(taken.redirected) + listOfNotNull(pending.head(client.name)))
         retryDeferred()
     }
@@ -98,6 +99,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         val released = occupancy.release(client.name, resources)
         if (released.isNotEmpty()) releases++
         safety.standing(client.name)
+        parks.changed(client.name)
         wake(released)
         retryDeferred()
     }
@@ -109,7 +111,9 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         lastGrants.remove(client.name)
         safety.remove(client.name)
         releases++
-        wake(occupancy.releaseAll(client.name))
+        val released = occupancy.releaseAll(client.name)
+        parks.changed(client.name)
+        wake(released)
         retryDeferred()
     }
 
@@ -314,6 +318,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         val taken = occupancy.take(request.client.name, request)
         safety.granted(request.client.name, request.keys)
         lastGrants[request.client.name] = request
+        parks.changed(request.client.name)
         deliveries.send(request.client, request.resources) { free(request.client, taken.added) }
         return taken.redirected
     }
