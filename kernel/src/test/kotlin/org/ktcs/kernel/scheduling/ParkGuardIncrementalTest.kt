@@ -83,6 +83,8 @@ private class RandomFleet(
 
             7 -> holds[client] = fronts[client]?.let { setOf(it) } ?: return null
 
+            8 -> holds[client] = (holds[client] ?: return null) + points.random(random)
+
             else -> return null.also { ask(client) }
         }
         return client
