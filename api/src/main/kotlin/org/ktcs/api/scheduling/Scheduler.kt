@@ -92,7 +92,37 @@ public interface Scheduler : KernelComponent {
      * scheduler that does not look ahead along claims. Called in the kernel context.
      */
     public fun claimBlockers(client: SchedulerClient): Set<String> = emptySet()
+
+    /**
+     * The vehicles whose next grant deadlock avoidance has held back for a while although no deadlock holds them, and
+     * that could drive into a free park point now, longest held back first. The deadlock watchdog sends one of them on
+     * through its park point per check (a *retreat*), which frees its point for the vehicles behind it. Only clients
+     * [eligible] accepts are offered (the watchdog leaves out those it sent recently), so a lazy sequence searches
+     * for no park point it need not. The default, none, suits a scheduler that holds no grant back for safety.
+     * Called in the kernel context.
+     */
+    public fun retreats(eligible: (String) -> Boolean): Sequence<Retreat> = emptySequence()
+
+    /**
+     * The nearest free park point [client] could drive into now over points nobody holds, or null: where the
+     * watchdog sends a vehicle of a deadlock that no new route breaks. The default, null, suits a scheduler that
+     * keeps no such view of the plant. Called in the kernel context.
+     */
+    public fun retreatPoint(client: String): String? = null
+
+    /**
+     * Called by the deadlock watchdog on each of its checks, while nothing else changes: a scheduler that holds a
+     * grant back only for a limited time decides the overdue ones again. The default does nothing. Called in the
+     * kernel context.
+     */
+    public fun retryOverdue() {}
+
+    /** How many grants deadlock avoidance has held back so far (each one until it was safe); the default is 0. */
+    public val grantsHeldBack: Long get() = 0
 }
+
+/** A [vehicle] held back that could drive into the free [parkPoint] now ([Scheduler.retreats]). */
+public data class Retreat(val vehicle: String, val parkPoint: String)
 
 /** How waits follow from what clients hold and request, as [Scheduler.waitsFor] derives them by default. */
 public object SchedulerWaits {

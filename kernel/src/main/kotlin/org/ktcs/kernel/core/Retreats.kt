@@ -1,6 +1,5 @@
 package org.ktcs.kernel.core
 
-import org.ktcs.kernel.scheduling.DefaultScheduler
 import org.slf4j.LoggerFactory
 
 /**
@@ -21,18 +20,18 @@ internal class Retreats(private val kernel: KernelCore) {
 
     /** Sends one retreat if a vehicle is held back and can retreat; returns whether it did. */
     fun check(): Boolean {
-        val scheduler = kernel.scheduler as? DefaultScheduler ?: return false
+        val scheduler = kernel.scheduler
         checks++
         scheduler.retryOverdue()
         if (lastSent.size > 64) lastSent.values.removeIf { checks - it >= COOLDOWN_CHECKS }
         val allocations by lazy(LazyThreadSafetyMode.NONE) { scheduler.allocations() }
         val ready = { vehicle: String -> lastSent[vehicle]?.let { checks - it < COOLDOWN_CHECKS } != true }
-        return scheduler.retreats(ready).any { (vehicle, park) -> send(vehicle, park, allocations, "held back") }
+        return scheduler.retreats(ready).any { send(it.vehicle, it.parkPoint, allocations, "held back") }
     }
 
     /** Sends one vehicle of a deadlock that no reroute breaks on through a free park point it reaches now. */
     fun breakCycle(vehicles: List<String>): Boolean {
-        val scheduler = kernel.scheduler as? DefaultScheduler ?: return false
+        val scheduler = kernel.scheduler
         val allocations = scheduler.allocations()
         return vehicles.any { vehicle ->
             scheduler.retreatPoint(vehicle)?.let { send(vehicle, it, allocations, "of a deadlock") } == true

@@ -2,6 +2,7 @@ package org.ktcs.kernel.scheduling
 
 import org.ktcs.api.kernel.KernelClock
 import org.ktcs.api.model.PlantModel
+import org.ktcs.api.scheduling.Retreat
 import org.ktcs.api.scheduling.Scheduler
 import org.ktcs.api.scheduling.SchedulerClient
 import org.slf4j.LoggerFactory
@@ -38,8 +39,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     private var releases = 0L
     private var nextSeq = 0L
 
-    /** How many grants deadlock avoidance held back so far (each one until it was safe). */
-    val grantsHeldBack: Long get() = safety.heldBack + parks.heldBack
+    override val grantsHeldBack: Long get() = safety.heldBack + parks.heldBack
 
     override fun updatePlantModel(model: PlantModel) {
         deliveries.cancelAll()
@@ -85,6 +85,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         val taken = occupancy.take(client.name, request)
         lastGrants.remove(client.name)
         safety.standing(client.name)
+        parks.changed(client.name)
         process(pending.waitingFor(taken.redirected) + listOfNotNull(pending.head(client.name)))
         retryDeferred()
     }
@@ -98,6 +99,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         val released = occupancy.release(client.name, resources)
         if (released.isNotEmpty()) releases++
         safety.standing(client.name)
+        parks.changed(client.name)
         wake(released)
         retryDeferred()
     }
@@ -109,7 +111,9 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         lastGrants.remove(client.name)
         safety.remove(client.name)
         releases++
-        wake(occupancy.releaseAll(client.name))
+        val released = occupancy.releaseAll(client.name)
+        parks.changed(client.name)
+        wake(released)
         retryDeferred()
     }
 
@@ -212,30 +216,21 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         return last?.let { pointOf(it.resources) } ?: occupancy.holdingKeys(client).singleOrNull(safety::isPoint)
     }
 
-    /**
-     * The clients held back for longer than two watchdog periods that could retreat now, each with the nearest free
-     * park point it reaches over free points, longest held back first: how the watchdog gets a fleet moving again
-     * that deadlock avoidance holds back in a safe state. Lazy: each retreat point is searched for only when the
-     * caller gets to it (the watchdog sends one retreat per check), and only for clients [eligible] accepts.
-     */
-    fun retreats(eligible: (String) -> Boolean): Sequence<Pair<String, String>> {
+    /** Those held back for longer than two watchdog periods; each retreat point is searched for when asked for. */
+    override fun retreats(eligible: (String) -> Boolean): Sequence<Retreat> {
         val now = clock.elapsedMillis()
         return deferred.filter { now - (deferredSince[it.seq] ?: now) >= HELD_BACK_REPORT_MILLIS }
             .sortedBy { deferredSince[it.seq] }
             .asSequence()
             .map { it.client.name }
             .filter(eligible)
-            .mapNotNull { client -> parks.retreatPoint(client)?.let { client to it } }
+            .mapNotNull { client -> parks.retreatPoint(client)?.let { Retreat(client, it) } }
     }
 
-    /** The nearest free park point [client] reaches now over points nobody holds, or null. */
-    fun retreatPoint(client: String): String? = parks.retreatPoint(client)
+    override fun retreatPoint(client: String): String? = parks.retreatPoint(client)
 
-    /**
-     * Retries the grants held back for longer than the park test's patience, which the local rule alone decides now
-     * (called by the watchdog: nothing else may change while the fleet stands).
-     */
-    fun retryOverdue() {
+    /** Retries the grants held back for longer than the park test's patience, which the local rule alone decides now. */
+    override fun retryOverdue() {
         val now = clock.elapsedMillis()
         if (deferred.any { now - (deferredSince[it.seq] ?: now) >= PARK_TEST_PATIENCE_MILLIS }) retryDeferred()
     }
@@ -314,6 +309,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         val taken = occupancy.take(request.client.name, request)
         safety.granted(request.client.name, request.keys)
         lastGrants[request.client.name] = request
+        parks.changed(request.client.name)
         deliveries.send(request.client, request.resources) { free(request.client, taken.added) }
         return taken.redirected
     }

@@ -2,9 +2,9 @@ package org.ktcs.kernel.scheduling
 
 /** A growable stack of ints, to keep the check free of boxing. */
 internal class IntStack {
-    private var items = IntArray(8)
+    @PublishedApi internal var items = IntArray(8)
 
-    private var size = 0
+    @PublishedApi internal var size = 0
 
     fun push(value: Int) {
         if (size == items.size) items = items.copyOf(size * 2)
@@ -13,9 +13,13 @@ internal class IntStack {
 
     fun pop(): Int = items[--size]
 
+    fun clear() {
+        size = 0
+    }
+
     fun isNotEmpty(): Boolean = size > 0
 
-    fun forEach(action: (Int) -> Unit) {
+    inline fun forEach(action: (Int) -> Unit) {
         for (i in 0 until size) action(items[i])
     }
 }

@@ -61,7 +61,28 @@ internal class ParkSafety(model: PlantModel) {
         }
     }
 
+    // Per point, its successors nearest a park point first (on the empty plant), and that distance.
+    private val parkDistance = IntArray(names.size) { Int.MAX_VALUE }.also { distance ->
+        val queue = IntQueue()
+        for (point in parkList) {
+            distance[point] = 0
+            queue.push(point)
+        }
+        while (queue.isNotEmpty()) {
+            val point = queue.take()
+            for (previous in predecessors[point]) {
+                if (distance[previous] != Int.MAX_VALUE) continue
+                distance[previous] = distance[point] + 1
+                queue.push(previous)
+            }
+        }
+    }
+    private val towardPark = Array(names.size) { point -> successors[point].sortedBy { parkDistance[it] }.toIntArray() }
+
     private val buffers by lazy { Buffers() }
+
+    /** How many points the plant has: the size of the per-point counts [canLeave] takes. */
+    val pointCount: Int = names.size
 
     /** The index of point [name], or -1 if it is none. */
     fun pointIndex(name: String): Int = index[name] ?: -1
@@ -70,7 +91,49 @@ internal class ParkSafety(model: PlantModel) {
      * Whether every vehicle of [fleet] can be taken off the lanes (see the class). [fleet] lists each vehicle's front
      * and the points it holds, as indices ([pointIndex]).
      */
-    fun isSafe(fleet: List<Standing>): Boolean = Check(fleet).removeAll() == fleet.size
+    fun isSafe(fleet: List<Standing>): Boolean = stuck(fleet).isEmpty()
+
+    /**
+     * The vehicles of [fleet] that cannot be taken off the lanes (none if the state is safe). They trap each other:
+     * with only them holding anything none of them could leave, so the state stays unsafe whatever the others do
+     * until one of them changes.
+     */
+    fun stuck(fleet: List<Standing>): List<Standing> {
+        val removed = Check(fleet).removeAll()
+        return fleet.filterIndexed { i, _ -> !removed[i] }
+    }
+
+    /**
+     * Whether [vehicle] could be taken off the lanes first, while [holders] counts per point the vehicles holding it
+     * (including [vehicle]): it is on a park point or where none can be reached, or one of its exits leads to a point
+     * from which a way over free points ends in a free park point. A search nearest-to-a-park-point first, so on free
+     * lanes it costs the way out, not the plant.
+     */
+    fun canLeave(vehicle: Standing, holders: IntArray): Boolean {
+        if (isPark[vehicle.front] || !canPark[vehicle.front]) return true
+        val search = buffers.search
+        val seen = buffers.seen
+        val mark = ++buffers.searches
+        for (exit in vehicle.exits) {
+            for (start in towardPark[exit]) {
+                if (holders[start] > 0 || seen[start] == mark) continue
+                seen[start] = mark
+                search.push(start)
+            }
+        }
+        while (search.isNotEmpty()) {
+            val point = search.pop()
+            if (isPark[point]) return true.also { search.clear() }
+            val next = towardPark[point]
+            for (i in next.indices.reversed()) {
+                val candidate = next[i]
+                if (holders[candidate] > 0 || seen[candidate] == mark) continue
+                seen[candidate] = mark
+                search.push(candidate)
+            }
+        }
+        return false
+    }
 
     /**
      * The nearest free park point [vehicle] of [fleet] reaches from its front over points nobody holds, or null: where
@@ -98,7 +161,12 @@ internal class ParkSafety(model: PlantModel) {
      * One vehicle as the test sees it: its [front], the [points] it holds and the points it can drive off from
      * ([exits]: its front and, inside a single-vehicle block, the block's points it holds), as indices.
      */
-    class Standing(val name: String, val front: Int, val points: IntArray, val exits: IntArray = intArrayOf(front))
+    class Standing(val name: String, val front: Int, val points: IntArray, val exits: IntArray = intArrayOf(front)) {
+        /** Whether [other] is the same vehicle standing the same way. */
+        fun sameAs(other: Standing): Boolean =
+            name == other.name && front == other.front && points.contentEquals(other.points) &&
+                exits.contentEquals(other.exits)
+    }
 
     /**
      * One run of the test; see [removeAll]. Its arrays are reused from run to run (the scheduler is confined to the
@@ -119,9 +187,10 @@ internal class ParkSafety(model: PlantModel) {
         private val grow = IntQueue()
         private val touched = IntStack()
 
-        /** Takes vehicles off as long as one can be; returns how many were. */
-        fun removeAll(): Int = try {
+        /** Takes vehicles off as long as one can be; returns, per vehicle of the fleet, whether it was. */
+        fun removeAll(): BooleanArray = try {
             run()
+            removed
         } finally {
             touched.forEach { point ->
                 holders[point] = 0
@@ -130,7 +199,7 @@ internal class ParkSafety(model: PlantModel) {
             }
         }
 
-        private fun run(): Int {
+        private fun run() {
             var nodes = 0
             fleet.forEachIndexed { i, vehicle ->
                 vehicle.points.forEach { point ->
@@ -147,16 +216,13 @@ internal class ParkSafety(model: PlantModel) {
             }
             for (point in parkList) if (holders[point] == 0) join(point)
             spread()
-            var count = 0
             while (candidates.isNotEmpty()) {
                 val i = candidates.pop()
                 if (removed[i]) continue
                 removed[i] = true
-                count++
                 free(fleet[i])
                 spread()
             }
-            return count
         }
 
         private fun free(vehicle: Standing) {
@@ -194,5 +260,10 @@ internal class ParkSafety(model: PlantModel) {
         val holders = IntArray(names.size)
         val reaches = BooleanArray(names.size)
         val frontHead = IntArray(names.size) { -1 }
+
+        // For [canLeave]: the points to search from, and per point the number of the last search that saw it.
+        val search = IntStack()
+        val seen = IntArray(names.size)
+        var searches = 0
     }
 }

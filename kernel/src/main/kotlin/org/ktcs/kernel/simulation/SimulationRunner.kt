@@ -19,7 +19,6 @@ import org.ktcs.kernel.dispatching.DefaultDispatcher
 import org.ktcs.kernel.dispatching.VehicleAvailability
 import org.ktcs.kernel.routerConfiguration
 import org.ktcs.kernel.routing.DefaultRouter
-import org.ktcs.kernel.scheduling.DefaultScheduler
 import java.lang.management.ManagementFactory
 import kotlin.random.Random
 
@@ -155,7 +154,7 @@ class SimulationRunner(
             deadlocksResolved = kernel.core.watchdog.resolved,
             idleVehiclesMoved = kernel.core.watchdog.idleVehiclesMoved,
             retreats = kernel.core.watchdog.retreats,
-            grantsHeldBack = (kernel.core.scheduler as? DefaultScheduler)?.grantsHeldBack ?: 0,
+            grantsHeldBack = kernel.core.scheduler.grantsHeldBack,
         )
     }
 

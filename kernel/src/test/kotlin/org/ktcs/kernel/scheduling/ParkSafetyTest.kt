@@ -73,6 +73,7 @@ class ParkSafetyTest : FunSpec({
         guard.mayGrant("ve", "c", setOf("e-c", "c")) shouldBe false
         guard.heldBack shouldBe 1
         holdings["vd"] = setOf("d")
+        guard.changed("vd")
         guard.mayGrant("ve", "c", setOf("e-c", "c")) shouldBe true
     }
 
