@@ -1,0 +1,103 @@
+package org.ktcs.kernel.core
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.shouldBe
+import org.koin.dsl.module
+import org.ktcs.api.model.Path
+import org.ktcs.api.model.PlantModel
+import org.ktcs.api.model.Point
+import org.ktcs.api.model.PointType
+import org.ktcs.api.model.Vehicle
+import org.ktcs.api.order.Destination
+import org.ktcs.api.order.TransportOrderCreation
+import org.ktcs.api.order.TransportOrderState
+import org.ktcs.api.scheduling.Retreat
+import org.ktcs.api.scheduling.Scheduler
+import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.context.KernelContext
+import org.ktcs.kernel.scheduling.DefaultScheduler
+import org.ktcs.kernel.simulation.SimulationKernel
+
+/** A scheduler in place of the default one (no [DefaultScheduler]) that offers the retreats a test sets. */
+private class RetreatingScheduler(inner: Scheduler) : Scheduler by inner {
+    var offered: List<Retreat> = emptyList()
+    var asked = 0
+
+    override fun retreats(eligible: (String) -> Boolean): Sequence<Retreat> {
+        asked++
+        return offered.asSequence().filter { eligible(it.vehicle) }
+    }
+}
+
+/**
+ * Retreats as the deadlock watchdog sends them: it asks the scheduler in place through the `api` interface, and a
+ * vehicle sent is routed on through the park point to where it was going.
+ */
+class RetreatTest : FunSpec({
+    val config = ConfigLoader().load(
+        null,
+        emptyMap(),
+        listOf(
+            "kernel.deadlockCheckInterval=0",
+            "dispatcher.parkIdleVehicles=false",
+            "dispatcher.rechargeIdleVehicles=false",
+        ),
+    )
+    // A -> W -> X -> B -> D is the way; the park point P is a detour from X back to B.
+    val model = PlantModel(
+        "retreat",
+        points = listOf("A", "W", "X", "B", "D").map { Point(it) } + Point("P", type = PointType.PARK_POSITION),
+        paths = listOf(
+            Path("A --- W", "A", "W", 10_000),
+            Path("W --- X", "W", "X", 10_000),
+            Path("X --- B", "X", "B", 1_000),
+            Path("B --- D", "B", "D", 1_000),
+            Path("X --- P", "X", "P", 2_000),
+            Path("P --- B", "P", "B", 2_000),
+        ),
+        vehicles = listOf(Vehicle("V", properties = mapOf("loopback:initialPosition" to "A"))),
+    )
+    val replacing = module {
+        single<Scheduler> { RetreatingScheduler(DefaultScheduler(get(), get<KernelContext>())) }
+    }
+
+    fun SimulationKernel.now(action: KernelCore.() -> Unit) = execute(settleMillis = 50, action)
+
+    test("a retreat the replaced scheduler offers is sent, and the vehicle goes on through the park point") {
+        val drivers = RecordingStepDrivers()
+        SimulationKernel(model, config, listOf(drivers.module, replacing)).use { kernel ->
+            val scheduler = kernel.core.scheduler as RetreatingScheduler
+            kernel.now { createTransportOrder(TransportOrderCreation("T", listOf(Destination("D", "MOVE")))) }
+            kernel.context.runUntilTime(kernel.context.elapsedMillis() + 1_000)
+
+            kernel.now { checkForDeadlocks() }
+            scheduler.asked shouldBe 1
+            kernel.core.watchdog.retreats shouldBe 0
+
+            scheduler.offered = listOf(Retreat("V", "P"))
+            kernel.now { checkForDeadlocks() }
+            kernel.core.watchdog.retreats shouldBe 1
+            // Sent once, then left alone for a while: a retreat that did not help must not keep the vehicle circling.
+            kernel.now { checkForDeadlocks() }
+            kernel.core.watchdog.retreats shouldBe 1
+
+            kernel.context.runUntil { kernel.core.orders.require("T").state.isFinal }
+            val order = kernel.core.orders.require("T")
+            order.state shouldBe TransportOrderState.FINISHED
+            order.driveOrders.single().route!!.steps.map { it.path } shouldBe
+                listOf("A --- W", "W --- X", "X --- P", "P --- B", "B --- D")
+        }
+    }
+
+    test("a vehicle without a transport order is not sent, and the watchdog goes on to look for deadlocks") {
+        val drivers = RecordingStepDrivers()
+        SimulationKernel(model, config, listOf(drivers.module, replacing)).use { kernel ->
+            val scheduler = kernel.core.scheduler as RetreatingScheduler
+            scheduler.offered = listOf(Retreat("V", "P"))
+            kernel.now { checkForDeadlocks() }
+            scheduler.asked shouldBe 1
+            kernel.core.watchdog.retreats shouldBe 0
+            kernel.core.plant.vehicle("V").currentPosition shouldBe "A"
+        }
+    }
+})
