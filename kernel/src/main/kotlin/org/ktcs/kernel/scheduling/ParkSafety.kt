@@ -45,23 +45,7 @@ internal class ParkSafety(model: PlantModel) {
         predecessors = Array(names.size) { previous[it].toIntArray() }
     }
 
-    // The points from which a park point can be reached on an empty plant.
-    private val canPark = BooleanArray(names.size).also { reached ->
-        val queue = IntQueue()
-        for (point in parkList) {
-            reached[point] = true
-            queue.push(point)
-        }
-        while (queue.isNotEmpty()) {
-            for (previous in predecessors[queue.take()]) {
-                if (reached[previous]) continue
-                reached[previous] = true
-                queue.push(previous)
-            }
-        }
-    }
-
-    // Per point, its successors nearest a park point first (on the empty plant), and that distance.
+    // Per point, how many paths it is from the nearest park point on the empty plant (MAX_VALUE: none can be reached).
     private val parkDistance = IntArray(names.size) { Int.MAX_VALUE }.also { distance ->
         val queue = IntQueue()
         for (point in parkList) {
@@ -77,7 +61,12 @@ internal class ParkSafety(model: PlantModel) {
             }
         }
     }
+
+    // Per point, its successors nearest a park point first.
     private val towardPark = Array(names.size) { point -> successors[point].sortedBy { parkDistance[it] }.toIntArray() }
+
+    // Whether a park point can be reached from [point] on an empty plant.
+    private fun canPark(point: Int): Boolean = parkDistance[point] != Int.MAX_VALUE
 
     private val buffers by lazy { Buffers() }
 
@@ -110,7 +99,7 @@ internal class ParkSafety(model: PlantModel) {
      * lanes it costs the way out, not the plant.
      */
     fun canLeave(vehicle: Standing, holders: IntArray): Boolean {
-        if (isPark[vehicle.front] || !canPark[vehicle.front]) return true
+        if (isPark[vehicle.front] || !canPark(vehicle.front)) return true
         val search = buffers.search
         val seen = buffers.seen
         val mark = ++buffers.searches
@@ -212,7 +201,7 @@ internal class ParkSafety(model: PlantModel) {
                     frontHead[point] = nodes++
                     touched.push(point)
                 }
-                if (isPark[vehicle.front] || !canPark[vehicle.front]) candidates.push(i)
+                if (isPark[vehicle.front] || !canPark(vehicle.front)) candidates.push(i)
             }
             for (point in parkList) if (holders[point] == 0) join(point)
             spread()

@@ -44,9 +44,11 @@ internal class StateReader(private val validate: Boolean) {
         val repeated = if (previous == null) emptySet() else arrays.filter { (name, a) -> lastArrays[name] == a }.keys
         // What is left in the message to check and decode: the elements no valid message of the vehicle had.
         val freshIndexes = arrays.mapValues { (name, array) ->
-            val known = if (name in repeated) null else lastElements[name].orEmpty()
-            array.indices().filter { known != null && array[it] !in known }
-                .also { fresh -> message!!.replace(name, message.arrayNode().addAll(fresh.map(array::get))) }
+            val known = lastElements[name].orEmpty()
+            if (name in repeated) emptyList() else array.indices().filter { array[it] !in known }
+        }
+        freshIndexes.forEach { (name, fresh) ->
+            message!!.replace(name, message.arrayNode().addAll(fresh.map(arrays.getValue(name)::get)))
         }
         if (validate) {
             val problems = MessageValidator.schemaProblems(IncomingTopic.STATE, tree)
