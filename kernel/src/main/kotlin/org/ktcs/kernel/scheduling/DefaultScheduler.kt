@@ -96,7 +96,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     }
 
     override fun free(client: SchedulerClient, resources: Set<String>) {
-        val released = occupancy.release(client.name, resources)
+        val released = occupancy.release(client.name, resources - deliveries.withhold(client.name, resources))
         if (released.isNotEmpty()) releases++
         safety.standing(client.name)
         parks.changed(client.name)
@@ -310,7 +310,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         safety.granted(request.client.name, request.keys)
         lastGrants[request.client.name] = request
         parks.changed(request.client.name)
-        deliveries.send(request.client, request.resources) { free(request.client, taken.added) }
+        deliveries.send(request.client, request.resources) { withheld -> free(request.client, taken.added + withheld) }
         return taken.redirected
     }
 
