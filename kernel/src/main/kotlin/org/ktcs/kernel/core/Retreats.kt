@@ -12,6 +12,7 @@ import org.slf4j.LoggerFactory
 internal class Retreats(private val kernel: KernelCore) {
     private val log = LoggerFactory.getLogger(Retreats::class.java)
     private val lastSent = HashMap<String, Long>()
+    private val targets = RetreatTargets()
     private var checks = 0L
 
     /** How many retreats were sent. */
@@ -25,6 +26,7 @@ internal class Retreats(private val kernel: KernelCore) {
         scheduler.retryOverdue()
         if (lastSent.size > 64) lastSent.values.removeIf { checks - it >= COOLDOWN_CHECKS }
         val allocations by lazy(LazyThreadSafetyMode.NONE) { scheduler.allocations() }
+        targets.update(checks) { allocations[it].orEmpty() }
         val ready = { vehicle: String -> lastSent[vehicle]?.let { checks - it < COOLDOWN_CHECKS } != true }
         return scheduler.retreats(ready).any { send(it.vehicle, it.parkPoint, allocations, "held back") }
     }
@@ -39,9 +41,11 @@ internal class Retreats(private val kernel: KernelCore) {
     }
 
     private fun send(vehicle: String, park: String, allocations: Map<String, Set<String>>, why: String): Boolean {
+        if (targets.isTargetOfAnother(park, vehicle)) return false
         val occupied = allocations.filterKeys { it != vehicle }.values.flatMapTo(HashSet()) { it }
         if (!kernel.retreat(vehicle, park, occupied)) return false
         lastSent[vehicle] = checks
+        targets.add(vehicle, park, checks)
         sent++
         log.info("traffic: vehicle {} {}, sent on through park point {}", vehicle, why, park)
         return true
@@ -49,5 +53,39 @@ internal class Retreats(private val kernel: KernelCore) {
 
     private companion object {
         const val COOLDOWN_CHECKS = 60L
+    }
+}
+
+/**
+ * The park points retreats were sent to, each until its vehicle has been in and out again (or for at most
+ * [MAX_CHECKS] checks: its route may have changed since). Two vehicles sent into the same dead-end bay meet head-on
+ * at its mouth, each waiting for the other.
+ */
+private class RetreatTargets {
+    private class Target(val park: String, val sentAt: Long) {
+        var reached = false
+    }
+
+    private val targets = HashMap<String, Target>()
+
+    fun isTargetOfAnother(park: String, vehicle: String): Boolean =
+        targets.any { (other, target) -> other != vehicle && target.park == park }
+
+    fun add(vehicle: String, park: String, check: Long) {
+        targets[vehicle] = Target(park, check)
+    }
+
+    /** Forgets the targets reached and left again, and those sent too long ago, by what each vehicle [holds] now. */
+    fun update(check: Long, holds: (String) -> Set<String>) {
+        if (targets.isEmpty()) return
+        targets.entries.removeIf { (vehicle, target) ->
+            val inside = target.park in holds(vehicle)
+            if (inside) target.reached = true
+            (target.reached && !inside) || check - target.sentAt >= MAX_CHECKS
+        }
+    }
+
+    private companion object {
+        const val MAX_CHECKS = 120L
     }
 }
