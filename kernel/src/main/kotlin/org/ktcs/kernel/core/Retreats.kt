@@ -3,10 +3,10 @@ package org.ktcs.kernel.core
 import org.slf4j.LoggerFactory
 
 /**
- * Gets a fleet moving that deadlock avoidance holds back without a deadlock: the vehicle held back longest that can
- * drive into a free park point over free points now is sent on through it (a *retreat*), which frees its point for
- * the vehicles behind it. One such retreat per watchdog check, and a vehicle is not sent again for [COOLDOWN_CHECKS]
- * checks, so retreats that do not help cannot keep the fleet circling through park bays. The watchdog also breaks a
+ * Gets a fleet moving that deadlock avoidance holds back without a deadlock: each vehicle held back that can drive into
+ * a free park point over free points now is sent on through it (a *retreat*), which frees its point for the vehicles
+ * behind it, oldest hold first, each into a bay no other retreat is bound for. A vehicle is not sent again for
+ * [COOLDOWN_CHECKS] checks, so retreats that do not help cannot keep the fleet circling through park bays. The watchdog also breaks a
  * deadlock by a retreat ([breakCycle]) where routing around it does not, or did not last.
  */
 internal class Retreats(private val kernel: KernelCore) {
@@ -19,16 +19,19 @@ internal class Retreats(private val kernel: KernelCore) {
     var sent = 0
         private set
 
-    /** Sends one retreat if a vehicle is held back and can retreat; returns whether it did. */
+    /** Sends the vehicles held back that can retreat now; returns whether it sent any. */
     fun check(): Boolean {
         val scheduler = kernel.scheduler
         checks++
         scheduler.retryOverdue()
         if (lastSent.size > 64) lastSent.values.removeIf { checks - it >= COOLDOWN_CHECKS }
-        val allocations by lazy(LazyThreadSafetyMode.NONE) { scheduler.allocations() }
-        targets.update(checks) { allocations[it].orEmpty() }
+        targets.update(checks, scheduler::allocations)
         val ready = { vehicle: String -> lastSent[vehicle]?.let { checks - it < COOLDOWN_CHECKS } != true }
-        return scheduler.retreats(ready).any { send(it.vehicle, it.parkPoint, allocations, "held back") }
+        // Every vehicle that can retreat now, each to a bay of its own: one per check was too few where most of the
+        // fleet is held back and a check spans many moves (a warehouse at time factor 100 stalled through the web API).
+        return scheduler.retreats(ready).count {
+            send(it.vehicle, it.parkPoint, scheduler.allocations(), "held back")
+        } > 0
     }
 
     /** Sends one vehicle of a deadlock that no reroute breaks on through a free park point it reaches now. */
@@ -75,11 +78,12 @@ private class RetreatTargets {
         targets[vehicle] = Target(park, check)
     }
 
-    /** Forgets the targets reached and left again, and those sent too long ago, by what each vehicle [holds] now. */
-    fun update(check: Long, holds: (String) -> Set<String>) {
+    /** Forgets the targets reached and left again, and those sent too long ago, by what each vehicle holds now. */
+    fun update(check: Long, allocations: () -> Map<String, Set<String>>) {
         if (targets.isEmpty()) return
+        val holdings = allocations()
         targets.entries.removeIf { (vehicle, target) ->
-            val inside = target.park in holds(vehicle)
+            val inside = target.park in holdings[vehicle].orEmpty()
             if (inside) target.reached = true
             (target.reached && !inside) || check - target.sentAt >= MAX_CHECKS
         }
