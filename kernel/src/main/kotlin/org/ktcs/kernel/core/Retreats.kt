@@ -3,30 +3,35 @@ package org.ktcs.kernel.core
 import org.slf4j.LoggerFactory
 
 /**
- * Gets a fleet moving that deadlock avoidance holds back without a deadlock: the vehicle held back longest that can
- * drive into a free park point over free points now is sent on through it (a *retreat*), which frees its point for
- * the vehicles behind it. One such retreat per watchdog check, and a vehicle is not sent again for [COOLDOWN_CHECKS]
- * checks, so retreats that do not help cannot keep the fleet circling through park bays. The watchdog also breaks a
+ * Gets a fleet moving that deadlock avoidance holds back without a deadlock: each vehicle held back that can drive into
+ * a free park point over free points now is sent on through it (a *retreat*), which frees its point for the vehicles
+ * behind it, oldest hold first, each into a bay no other retreat is bound for. A vehicle is not sent again for
+ * [COOLDOWN_CHECKS] checks, so retreats that do not help cannot keep the fleet circling through park bays. The watchdog also breaks a
  * deadlock by a retreat ([breakCycle]) where routing around it does not, or did not last.
  */
 internal class Retreats(private val kernel: KernelCore) {
     private val log = LoggerFactory.getLogger(Retreats::class.java)
     private val lastSent = HashMap<String, Long>()
+    private val targets = RetreatTargets()
     private var checks = 0L
 
     /** How many retreats were sent. */
     var sent = 0
         private set
 
-    /** Sends one retreat if a vehicle is held back and can retreat; returns whether it did. */
+    /** Sends the vehicles held back that can retreat now; returns whether it sent any. */
     fun check(): Boolean {
         val scheduler = kernel.scheduler
         checks++
         scheduler.retryOverdue()
         if (lastSent.size > 64) lastSent.values.removeIf { checks - it >= COOLDOWN_CHECKS }
-        val allocations by lazy(LazyThreadSafetyMode.NONE) { scheduler.allocations() }
+        targets.update(checks, scheduler::allocations)
         val ready = { vehicle: String -> lastSent[vehicle]?.let { checks - it < COOLDOWN_CHECKS } != true }
-        return scheduler.retreats(ready).any { send(it.vehicle, it.parkPoint, allocations, "held back") }
+        // Every vehicle that can retreat now, each to a bay of its own: one per check was too few where most of the
+        // fleet is held back and a check spans many moves (a warehouse at time factor 100 stalled through the web API).
+        return scheduler.retreats(ready).count {
+            send(it.vehicle, it.parkPoint, scheduler.allocations(), "held back")
+        } > 0
     }
 
     /** Sends one vehicle of a deadlock that no reroute breaks on through a free park point it reaches now. */
@@ -39,9 +44,11 @@ internal class Retreats(private val kernel: KernelCore) {
     }
 
     private fun send(vehicle: String, park: String, allocations: Map<String, Set<String>>, why: String): Boolean {
+        if (targets.isTargetOfAnother(park, vehicle)) return false
         val occupied = allocations.filterKeys { it != vehicle }.values.flatMapTo(HashSet()) { it }
         if (!kernel.retreat(vehicle, park, occupied)) return false
         lastSent[vehicle] = checks
+        targets.add(vehicle, park, checks)
         sent++
         log.info("traffic: vehicle {} {}, sent on through park point {}", vehicle, why, park)
         return true
@@ -49,5 +56,40 @@ internal class Retreats(private val kernel: KernelCore) {
 
     private companion object {
         const val COOLDOWN_CHECKS = 60L
+    }
+}
+
+/**
+ * The park points retreats were sent to, each until its vehicle has been in and out again (or for at most
+ * [MAX_CHECKS] checks: its route may have changed since). Two vehicles sent into the same dead-end bay meet head-on
+ * at its mouth, each waiting for the other.
+ */
+private class RetreatTargets {
+    private class Target(val park: String, val sentAt: Long) {
+        var reached = false
+    }
+
+    private val targets = HashMap<String, Target>()
+
+    fun isTargetOfAnother(park: String, vehicle: String): Boolean =
+        targets.any { (other, target) -> other != vehicle && target.park == park }
+
+    fun add(vehicle: String, park: String, check: Long) {
+        targets[vehicle] = Target(park, check)
+    }
+
+    /** Forgets the targets reached and left again, and those sent too long ago, by what each vehicle holds now. */
+    fun update(check: Long, allocations: () -> Map<String, Set<String>>) {
+        if (targets.isEmpty()) return
+        val holdings = allocations()
+        targets.entries.removeIf { (vehicle, target) ->
+            val inside = target.park in holdings[vehicle].orEmpty()
+            if (inside) target.reached = true
+            (target.reached && !inside) || check - target.sentAt >= MAX_CHECKS
+        }
+    }
+
+    private companion object {
+        const val MAX_CHECKS = 120L
     }
 }

@@ -96,7 +96,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     }
 
     override fun free(client: SchedulerClient, resources: Set<String>) {
-        val released = occupancy.release(client.name, resources)
+        val released = occupancy.release(client.name, resources - deliveries.withhold(client.name, resources))
         if (released.isNotEmpty()) releases++
         safety.standing(client.name)
         parks.changed(client.name)
@@ -244,9 +244,22 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         return expanded + blocks.entries(expanded).map { it.block.name }
     }
 
-    // Per step, the point where the vehicle stops for an operation at its end (null: it drives on).
+    // Per step, the point where the vehicle stops at its end (null: it drives on): for an operation, or to turn back
+    // the way it came (the dead-end park bay of a retreat). Standing there it waits only for the way out, so a retreat
+    // is judged by its way into the bay; the way back out is judged when the vehicle asks for it, from the bay.
     private fun stopsOf(resources: List<Set<String>>): List<String?> =
-        resources.map { step -> if (step.any(safety::isLocation)) pointOf(step) else null }
+        resources.mapIndexed { i, step ->
+            if (step.any(safety::isLocation) || turnsBack(resources, i)) pointOf(step) else null
+        }
+
+    private fun turnsBack(resources: List<Set<String>>, i: Int): Boolean {
+        val next = resources.getOrNull(i + 1) ?: return false
+        val path = pathOf(resources[i])
+        return (path != null && path == pathOf(next)) || (i > 0 && pointOf(next) == pointOf(resources[i - 1]))
+    }
+
+    private fun pathOf(resources: Set<String>): String? =
+        resources.firstOrNull { !safety.isPoint(it) && !safety.isLocation(it) }
 
     // A step's resources are its path, the point it ends at and maybe a location: the point is where it ends.
     private fun pointOf(resources: Set<String>): String? = resources.lastOrNull(safety::isPoint)
@@ -310,7 +323,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         safety.granted(request.client.name, request.keys)
         lastGrants[request.client.name] = request
         parks.changed(request.client.name)
-        deliveries.send(request.client, request.resources) { free(request.client, taken.added) }
+        deliveries.send(request.client, request.resources) { withheld -> free(request.client, taken.added + withheld) }
         return taken.redirected
     }
 

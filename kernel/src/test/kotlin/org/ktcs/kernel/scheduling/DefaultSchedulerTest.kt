@@ -120,6 +120,35 @@ class DefaultSchedulerTest : FunSpec({
         f.held(v1) shouldBe setOf("A")
     }
 
+    test("what a client frees before hearing of a grant that includes it stays its own until the grant is announced") {
+        val f = SchedulerFixture()
+        val (v1, v2) = f.client("v1") to f.client("v2")
+        f.allocate(v1, "A")
+        f.allocate(v1, "A-B", "B")
+        // Turning back in a dead end: the next step asks again for A, which v1 still holds, so it is granted at once.
+        f.scheduler.allocate(v1, setOf("A-B", "A"))
+
+        f.scheduler.free(v1, setOf("A"))
+        f.allocate(v2, "A")
+
+        v1.granted shouldContainExactly listOf(setOf("A"), setOf("A-B", "B"), setOf("A-B", "A"))
+        f.held(v1) shouldBe setOf("A", "A-B", "B")
+        v2.granted.shouldBeEmpty()
+    }
+
+    test("what a client freed before hearing of a grant it refuses is freed with it") {
+        val f = SchedulerFixture()
+        val (v1, v2) = f.client("v1") to f.client("v2")
+        f.allocate(v1, "A")
+        f.scheduler.allocate(v1, setOf("A", "A-B"))
+        f.scheduler.free(v1, setOf("A"))
+        v1.accepts = false
+        f.allocate(v2, "A")
+
+        f.held(v1).shouldBeEmpty()
+        v2.granted shouldContainExactly listOf(setOf("A"))
+    }
+
     test("freeAll gives everything back and forgets the claim and the pending requests") {
         val f = SchedulerFixture()
         val (v1, v2) = f.client("v1") to f.client("v2")
