@@ -49,8 +49,6 @@ class StateJournal(
     private var groupDeadline = System.nanoTime()
     private val waiting = PriorityQueue<Waiter>(compareBy { it.mark })
     private var notificationsWritten = 0L
-    private var changesSinceCheckpoint = 0
-    private var lastWrite = System.nanoTime()
     private val counts = Counts()
     private val writer = thread(name = "state-store-writer", isDaemon = true) { writeLoop() }
 
@@ -111,96 +109,49 @@ class StateJournal(
 
     private fun writeLoop() {
         while (true) {
-            val group = lock.withLock {
-                when {
-                    !awaitWork() -> null
-                    pending.isEmpty() && flushRequested <= flushed -> return
-                    else -> takeGroup()
-                }
+            val (batch, upTo, flush) = lock.withLock {
+                awaitWork()
+                if (pending.isEmpty() && flushRequested <= flushed) return
+                val taken = pending
+                pending = LinkedHashMap()
+                marked = 0
+                Triple(taken.values, appended, flushRequested > flushed)
             }
-            if (group == null) {
-                checkpoint()
-            } else if (!write(group)) {
-                return
-            }
+            // A client waits for changes the writer took (unflushed) before the client's request marked them.
+            // Stopping with a store that cannot be written: nothing of this batch or after it is answered as committed.
+            val started = System.nanoTime()
+            if (!writeUntilDone(batch.ifEmpty { listOf(flushMarker()) }, flush)) return
+            val written = System.nanoTime()
+            counts.add(batch.size, flush, written - started)
+            if (flush) answer(upTo)
+            counts.answerNanos += System.nanoTime() - written
         }
-    }
-
-    /** Everything appended so far, for one commit; flushed if a client marked a change not yet flushed. */
-    private fun takeGroup(): Group {
-        val taken = pending
-        pending = LinkedHashMap()
-        marked = 0
-        return Group(taken.values, appended, flushRequested > flushed)
-    }
-
-    /** Writes and answers [group]; false if the journal stopped before it could be written. */
-    private fun write(group: Group): Boolean {
-        // A client waits for changes the writer took (unflushed) before the client's request marked them.
-        // Stopping with a store that cannot be written: nothing of this group or after it is answered as committed.
-        val started = System.nanoTime()
-        if (!writeUntilDone(group.changes.ifEmpty { listOf(flushMarker()) }, group.flush)) return false
-        val written = System.nanoTime()
-        lastWrite = written
-        counts.add(group.changes.size, group.flush, written - started)
-        if (group.flush) answer(group.upTo)
-        counts.answerNanos += System.nanoTime() - written
-        changesSinceCheckpoint += group.changes.size
-        if (changesSinceCheckpoint >= CHECKPOINT_CHANGES) checkpoint()
-        return true
-    }
-
-    private class Group(val changes: Collection<StoreChange>, val upTo: Long, val flush: Boolean)
-
-    /** Whether the log has changes to checkpoint and the writer has had nothing to write for [IDLE_NANOS]. */
-    private fun checkpointDue() = changesSinceCheckpoint > 0 && System.nanoTime() - lastWrite >= IDLE_NANOS
-
-    /**
-     * Copies the log into the store's file: when the writer has been idle for [IDLE_NANOS] (no client waits for it
-     * then: a checkpoint fsyncs the store's file, a few milliseconds), or under a steady stream once [CHECKPOINT_CHANGES] changes were written since the last one, so that the
-     * log stays bounded. A failed checkpoint is tried again at the next occasion; the commits are on the disk anyway.
-     */
-    private fun checkpoint() {
-        val started = System.nanoTime()
-        lastWrite = started
-        try {
-            store.checkpoint()
-            changesSinceCheckpoint = 0
-        } catch (error: Exception) {
-            log.warn("state store checkpoint failed (the commits are in its log; tried again later): {}", error.message)
-        }
-        counts.checkpoint(System.nanoTime() - started)
     }
 
     /**
      * Waits, holding [lock], until there is a commit to make: with ASYNC any change; with COMMIT a complete group of
      * marks once the kernel woke the writer, or the kernel's own changes after [gatherNanos] (also a mark whose
-     * wake-up did not come by then, e.g. from a stopping kernel). False when it is time for an idle checkpoint.
+     * wake-up did not come by then, e.g. from a stopping kernel).
      */
-    private fun awaitWork(): Boolean {
+    private fun awaitWork() {
         while (running) {
             if (!waitForCommit) {
-                if (pending.isNotEmpty()) return true
-                val timedOut = changed.awaitNanos(gatherNanos) <= 0L
-                if (timedOut && pending.isEmpty() && checkpointDue()) return false
+                if (pending.isNotEmpty()) return
+                changed.await()
             } else if (flushRequested > flushed) {
                 // The group is complete once its last request marked (or its deadline passed); then the kernel's
                 // wake-up, which comes after the requests queued behind that mark, starts the commit.
                 val complete = groupComplete()
-                if (complete && !wakeQueued) return true
+                if (complete && !wakeQueued) return
                 val timedOut = changed.awaitNanos(if (complete) gatherNanos else groupDeadline - System.nanoTime())
-                if (timedOut <= 0L && complete) return true
+                if (timedOut <= 0L && complete) return
             } else {
                 // Until the group's deadline a mark signals only once the group is complete, so wait no longer.
                 val untilGroup = groupDeadline - System.nanoTime()
                 val timedOut = changed.awaitNanos(if (untilGroup > 0) untilGroup else gatherNanos) <= 0L
-                if (timedOut && untilGroup <= 0) {
-                    if (pending.isNotEmpty()) return true
-                    if (checkpointDue()) return false
-                }
+                if (timedOut && untilGroup <= 0 && pending.isNotEmpty()) return
             }
         }
-        return true
     }
 
     /** Everything up to [upTo] is on the disk: the requests waiting for it are answered (outside the lock). */
@@ -230,13 +181,6 @@ class StateJournal(
         private var writeNanos = 0L
         var requests = 0L
         var answerNanos = 0L
-        private var checkpoints = 0L
-        private var checkpointNanos = 0L
-
-        fun checkpoint(nanos: Long) {
-            checkpoints++
-            checkpointNanos += nanos
-        }
 
         fun add(changes: Int, flushed: Boolean, nanos: Long) {
             commits++
@@ -247,15 +191,12 @@ class StateJournal(
 
         override fun toString() =
             "$commits commits of $changes changes; $flushedCommits flushed, answering $requests waiting requests " +
-                "(%.1f per flushed commit); writing %.2f s, answering %.2f s, %d checkpoints %.2f s; of %.1f s"
-                    .format(
-                        if (flushedCommits == 0L) 0.0 else requests.toDouble() / flushedCommits,
-                        writeNanos / NANOS_PER_SECOND,
-                        answerNanos / NANOS_PER_SECOND,
-                        checkpoints,
-                        checkpointNanos / NANOS_PER_SECOND,
-                        (System.nanoTime() - startNanos) / NANOS_PER_SECOND,
-                    )
+                "(%.1f per flushed commit); writing %.2f s and answering %.2f s of %.1f s".format(
+                    if (flushedCommits == 0L) 0.0 else requests.toDouble() / flushedCommits,
+                    writeNanos / NANOS_PER_SECOND,
+                    answerNanos / NANOS_PER_SECOND,
+                    (System.nanoTime() - startNanos) / NANOS_PER_SECOND,
+                )
     }
 
     private fun flushMarker() = StoreChange.Put(StoreTable.KERNEL_VALUES, FLUSHED_KEY, System.currentTimeMillis())
@@ -298,10 +239,6 @@ class StateJournal(
         const val NOTIFICATIONS_KEPT = 1000
         private const val FLUSHED_KEY = "lastFlush"
         private const val GATHER_NANOS = 5_000_000L
-
-        /** Changes written before a checkpoint under a steady stream: about 10 MB of log with the orders' rows. */
-        const val CHECKPOINT_CHANGES = 2_000
-        private const val IDLE_NANOS = 100_000_000L
         private const val NANOS_PER_SECOND = 1e9
         private const val GROUP_NANOS = 0L // persistence.groupWait's default
         private const val RETRY_MILLIS = 1_000L

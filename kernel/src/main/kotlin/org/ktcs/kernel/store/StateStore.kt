@@ -76,26 +76,14 @@ class StateStore private constructor(
     /** SQLite's `synchronous`: FULL fsyncs the write-ahead log at each commit, NORMAL leaves that to a later one. */
     private fun flushCommitIf(flush: Boolean) {
         if (!embedded || flush == flushing) return
-        outsideTransaction("PRAGMA synchronous=${if (flush) "FULL" else "NORMAL"}")
-        flushing = flush
-    }
-
-    /**
-     * SQLite's checkpoint, which the journal runs when it is idle or its log has grown (the store opens with
-     * `wal_autocheckpoint=0`, so that no commit a client waits for also copies the log into the file).
-     */
-    override fun checkpoint() {
-        if (embedded) outsideTransaction("PRAGMA wal_checkpoint(PASSIVE)")
-    }
-
-    private fun outsideTransaction(pragma: String) {
-        // SQLite refuses some pragmas inside a transaction, and the driver keeps one open while autoCommit is off.
+        // SQLite refuses the change inside a transaction, and the driver keeps one open while autoCommit is off.
         connection.autoCommit = true
         try {
-            connection.createStatement().use { it.execute(pragma) }
+            connection.createStatement().use { it.execute("PRAGMA synchronous=${if (flush) "FULL" else "NORMAL"}") }
         } finally {
             connection.autoCommit = false
         }
+        flushing = flush
     }
 
     private fun stage(change: StoreChange) {
@@ -155,10 +143,8 @@ class StateStore private constructor(
                     checkIntegrity(statement, description)
                     statement.execute("PRAGMA journal_mode=WAL")
                     statement.execute("PRAGMA synchronous=${if (synchronous) "FULL" else "NORMAL"}")
-                    // The journal checkpoints (StateJournal.checkpoint), not the commit that passes 1,000 pages.
-                    statement.execute("PRAGMA wal_autocheckpoint=0")
-                    // SQLite keeps the WAL at its largest size after a checkpoint; this cuts it back after a large
-                    // write (a restart's recovery, a replaced model).
+                    // SQLite checkpoints the WAL into the file every 1,000 pages but keeps the WAL at its largest size;
+                    // this cuts it back after a large write (a restart's recovery, a replaced model).
                     statement.execute("PRAGMA journal_size_limit=$WAL_SIZE_LIMIT_BYTES")
                 }
             } catch (error: SQLException) {
@@ -265,7 +251,7 @@ class StateStore private constructor(
         const val FETCH_SIZE = 1000
         private const val ADVISORY_LOCK = 18_180_118L
         private const val BUSY_TIMEOUT_MILLIS = 1_000
-        private const val WAL_SIZE_LIMIT_BYTES = 16L * 1024 * 1024
+        private const val WAL_SIZE_LIMIT_BYTES = 8L * 1024 * 1024
 
         /** What a user can do about a store kTCS refuses to start over. */
         const val RECOVER =

@@ -10,10 +10,4 @@ interface StoreWriter : AutoCloseable {
 
     /** Deletes the notifications older than the newest [keep] ([newest] is the newest one's number). */
     fun trimNotifications(newest: Long, keep: Int)
-
-    /**
-     * Copies the committed changes from the write-ahead log into the store's file, so that the next commits write
-     * the log from its start (SQLite); nothing where the database does that itself (PostgreSQL).
-     */
-    fun checkpoint() = Unit
 }
