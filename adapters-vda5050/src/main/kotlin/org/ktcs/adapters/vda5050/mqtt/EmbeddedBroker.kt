@@ -98,6 +98,9 @@ class EmbeddedBroker(
         false
     }
 
+    /** How many PUBLISH packets the broker has received from its clients since it started (HiveMQ's own counter). */
+    fun publishesReceived(): Long = broker?.metricRegistry?.counters?.get(INCOMING_PUBLISHES)?.count ?: 0L
+
     override fun close() {
         val running = broker ?: return
         broker = null
@@ -129,5 +132,6 @@ class EmbeddedBroker(
         const val START_SECONDS = 60L
         const val BIND_ADDRESS_KEY = "vda5050.embeddedBroker.bindAddress"
         const val PORT_KEY = "vda5050.embeddedBroker.port"
+        const val INCOMING_PUBLISHES = "com.hivemq.messages.incoming.publish.count"
     }
 }

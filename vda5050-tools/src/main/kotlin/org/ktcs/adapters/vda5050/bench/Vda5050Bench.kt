@@ -33,16 +33,21 @@ data class Vda5050BenchOptions(
     val grid: Int? = null,
     val timeFactor: Double = 4.0,
     val timeoutSeconds: Long = 900,
+    /** Only the broker's steps ([BrokerSteps]), this many rounds of each, no kTCS run. */
+    val brokerStepRounds: Int = 0,
 ) {
     companion object {
-        const val USAGE = """usage: ktcs vda5050-bench [--vehicles N] [--orders M] [--grid G] [--time-factor F] [--timeout S]
+        const val USAGE = """usage: ktcs vda5050-bench [--vehicles N] [--orders M] [--grid G] [--time-factor F] [--timeout S] [--broker-steps R]
   Starts ./ktcs twice on a generated GxG traffic grid (default: as dense as 100 vehicles on 40x40) with N vehicles and posts the same M orders: once with VDA 5050
   vehicles played by the simulator over the embedded broker (state 1 Hz, visualization 10 Hz), once with loopback
   vehicles. Prints the orders finished, kTCS's CPU seconds per finished order in both runs and their ratio (with and
   without the embedded broker's threads, which run in kTCS's process), kTCS's CPU by thread group, the
   broker round trip (publish to receive, QoS 0) p50/p99 measured every 100 ms during the VDA 5050 run, and the
   floor: the embedded broker alone (in the bench's process) receiving the N simulated vehicles' messages with no
-  subscriber for 20 s, its CPU per second and per finished order at the VDA 5050 run's order rate."""
+  subscriber for 20 s, its CPU per second and per finished order at the VDA 5050 run's order rate.
+  --broker-steps R runs only, R times alternately, the embedded broker receiving the N vehicles' messages alone and
+  with a do-nothing publish inbound interceptor, and prints per message the CPU and the context switches of the
+  broker's and its extension executor's threads."""
 
         fun parse(args: List<String>): Vda5050BenchOptions {
             var options = Vda5050BenchOptions()
@@ -58,6 +63,8 @@ data class Vda5050BenchOptions(
                     "--grid" -> options.copy(grid = number().toInt())
 
                     "--timeout" -> options.copy(timeoutSeconds = number())
+
+                    "--broker-steps" -> options.copy(brokerStepRounds = number().toInt())
 
                     "--time-factor" -> options.copy(
                         timeFactor = args.getOrNull(++i)?.toDoubleOrNull()?.takeIf { it > 0 }
@@ -81,6 +88,8 @@ data class RunFigures(
     val wallSeconds: Double,
     /** kTCS's CPU seconds by thread group ([ThreadCpu]), biggest first. */
     val cpuByGroup: List<Pair<String, Double>> = emptyList(),
+    /** kTCS's threads' context switches by thread group ([ThreadSwitches]). */
+    val switchesByGroup: Map<String, Long> = emptyMap(),
 ) {
     val cpuPerOrderMillis: Double get() = perOrder(cpuSeconds)
 
@@ -102,6 +111,7 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
     private val orders = BenchOrders(plant, SEED).next("B", options.orders)
 
     fun run() {
+        if (options.brokerStepRounds > 0) return brokerSteps()
         println(
             "vda5050-bench: ${options.vehicles} vehicles, ${options.orders} orders, ${side}x$side grid, time factor ${options.timeFactor}",
         )
@@ -129,6 +139,19 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
         )
         printFloor(vda, loopback)
         println("logs: $work")
+    }
+
+    private fun brokerSteps() {
+        println(
+            "vda5050-bench: the embedded broker's steps, ${options.vehicles} vehicles, ${options.brokerStepRounds} rounds",
+        )
+        BrokerSteps(vdaModel(), SimulatorOptions(timeFactor = options.timeFactor)).run(options.brokerStepRounds)
+            .forEach {
+                println(
+                    "%-24s %6.0f messages/s: %6.1f µs CPU and %.2f context switches per message (broker + extension threads)"
+                        .format(it.step, it.messagesPerSecond, it.cpuMicros, it.switches),
+                )
+            }
     }
 
     private fun printFloor(vda: RunFigures, loopback: RunFigures) {
@@ -160,7 +183,12 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
     private fun groups(figures: RunFigures) = "          kTCS CPU by thread: " + figures.cpuByGroup
         .filter { it.second >= MIN_GROUP_SECONDS }
         .joinToString { (group, seconds) ->
-            "%s %.1f s (%.1f ms/order)".format(group, seconds, seconds * MILLIS / figures.finished.coerceAtLeast(1))
+            "%s %.1f s (%.1f ms/order, %.0f switches/s)".format(
+                group,
+                seconds,
+                seconds * MILLIS / figures.finished.coerceAtLeast(1),
+                (figures.switchesByGroup[group] ?: 0L) / figures.wallSeconds,
+            )
         }
 
     private fun vdaRun(): Pair<RunFigures, List<Double>> {
@@ -262,6 +290,7 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
         val stats = checkNotNull(ktcs.stats)
         val cpuStart = stats.cpuSeconds()
         val threads = ThreadCpu(stats)
+        val switches = ktcs.pid?.let(::ThreadSwitches)
         val start = System.nanoTime()
         orders.forEach { order: BenchOrder -> ktcs.client.postOrder(order.name, order.from, order.to) }
         val deadline = start + TimeUnit.SECONDS.toNanos(options.timeoutSeconds)
@@ -274,7 +303,8 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
         val cpu = stats.cpuSeconds() - cpuStart
         val wall = (System.nanoTime() - start) / NANOS_PER_SECOND
         val failed = states.filterKeys { it != "FINISHED" }.values.sum()
-        return RunFigures(states["FINISHED"] ?: 0, failed, cpu, wall, threads.byGroup())
+        val finished = states["FINISHED"] ?: 0
+        return RunFigures(finished, failed, cpu, wall, threads.byGroup(), switches?.byGroup().orEmpty())
     }
 
     private fun finalStates(ktcs: KtcsUnderTest): Map<String, Int> {
