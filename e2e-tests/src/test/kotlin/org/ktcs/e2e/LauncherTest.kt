@@ -87,6 +87,26 @@ class LauncherTest : FunSpec({
         }
     }
 
+    // The launcher lowers the compile thresholds of the code an order runs through (README, "Performance"). The JVM
+    // prints a command it cannot parse and starts anyway, so only the output shows a broken one.
+    test("starts with lower compile thresholds for the order path, and the JVM takes every command silently").config(
+        enabled = Files.isDirectory(Path.of("/proc/self")),
+    ) {
+        KtcsProcess(*local).use { ktcs ->
+            ktcs.awaitLine("kTCS ready")
+            val arguments = Files.readString(Path.of("/proc/${ktcs.pid}/cmdline")).split('\u0000')
+
+            arguments shouldContainAll listOf(
+                "-XX:CompileCommand=quiet",
+                "-XX:CompileCommand=CompileThresholdScaling,org.ktcs.*::*,0.3",
+                "-XX:CompileCommand=CompileThresholdScaling,io.ktor.*::*,0.3",
+                "-XX:CompileCommand=CompileThresholdScaling,org.ktcs.api.model.*::*,1.0",
+            )
+            ktcs.terminate() shouldBe 0
+            ktcs.output() shouldNotContain "CompileCommand"
+        }
+    }
+
     test("loads a model given with --model") {
         val model = Files.createTempFile("plant", ".xml")
         Files.writeString(model, TINY_MODEL)
