@@ -96,6 +96,7 @@ fun routerConfiguration(config: KtcsConfig) = RouterConfiguration(
     edgeEvaluators = config[KtcsSettings.routerEdgeEvaluators].values,
     explicitPropertiesDefaultValue = config[KtcsSettings.routerExplicitDefault],
     routeComputationLimit = config[KtcsSettings.routerComputationLimit],
+    operationPointSurcharge = config[KtcsSettings.routerOperationPointSurcharge],
 )
 
 fun dispatcherConfiguration(config: KtcsConfig) = DispatcherConfiguration(

@@ -14,6 +14,7 @@ import org.ktcs.kernel.dispatching.DEFAULT_ORDER_CANDIDATE_WINDOW
 import org.ktcs.kernel.dispatching.OrderPriority
 import org.ktcs.kernel.dispatching.VehiclePriority
 import org.ktcs.kernel.routing.EdgeEvaluator
+import org.ktcs.kernel.routing.RouterConfiguration
 import org.ktcs.kernel.routing.RoutingAlgorithm
 import org.ktcs.kernel.vehicles.ResourceManagement
 
@@ -145,6 +146,13 @@ object KtcsSettings {
         "The most routes computed " +
             "for one route query.",
     )
+    val routerOperationPointSurcharge = intSetting(
+        "router.operationPointSurcharge",
+        RouterConfiguration.DEFAULT_OPERATION_POINT_SURCHARGE,
+        0..100_000,
+        "Percent added to the cost of driving onto a point linked to a location, where vehicles stop to operate " +
+            "and hold up those behind (0: off).",
+    )
 
     val dispatcherRedispatchInterval = longSetting(
         "dispatcher.idleVehicleRedispatchingInterval",
@@ -249,6 +257,7 @@ object KtcsSettings {
         routerEdgeEvaluators,
         routerExplicitDefault,
         routerComputationLimit,
+        routerOperationPointSurcharge,
         dispatcherRedispatchInterval,
         dispatcherNewOrderDelay,
         dispatcherOrderPriorities,

@@ -18,13 +18,20 @@ internal class EdgeCosts(
     private val configuration: RouterConfiguration,
     private val key: GraphKey,
 ) {
+    private val operationPoints = model.locations.flatMap { location -> location.links.map { it.point } }.toSet()
+
     fun of(path: Path, orientation: VehicleOrientation): Long? {
         var total = 0L
         for (evaluator in configuration.edgeEvaluators) {
             total += evaluate(evaluator, path, orientation) ?: return null
         }
-        return total
+        val target = if (orientation == VehicleOrientation.BACKWARD) path.sourcePoint else path.destinationPoint
+        return if (total > 0 && target in operationPoints) total + surcharge(total) else total
     }
+
+    // Whole percent of a positive cost, rounded down; a route that must end at such a point pays it on every way in.
+    private fun surcharge(cost: Long): Long = cost / 100 * configuration.operationPointSurcharge +
+        cost % 100 * configuration.operationPointSurcharge / 100
 
     private fun evaluate(evaluator: EdgeEvaluator, path: Path, orientation: VehicleOrientation): Long? =
         when (evaluator) {

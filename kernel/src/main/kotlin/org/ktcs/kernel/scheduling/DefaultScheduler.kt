@@ -36,10 +36,15 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
 
     // Per request the park test refused, how many releases there had been: only a release can make it safe.
     private val parkRefusedAt = HashMap<Long, Long>()
+    private val refusedBy = HashMap<Long, GrantWait>()
     private var releases = 0L
     private var nextSeq = 0L
 
     override val grantsHeldBack: Long get() = safety.heldBack + parks.heldBack
+
+    /** Grants the park test had held back that its patience then left to the local rule alone. */
+    var grantsAfterPatience = 0L
+        private set
 
     override fun updatePlantModel(model: PlantModel) {
         deliveries.cancelAll()
@@ -52,6 +57,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         deferred.clear()
         deferredSince.clear()
         parkRefusedAt.clear()
+        refusedBy.clear()
         lastGrants.clear()
         claims.clear()
         paused.clear()
@@ -135,6 +141,20 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
 
     /** The direction in which the users of each SAME_DIRECTION_ONLY block entered it, where known, by block name. */
     fun blockDirections(): Map<String, String> = occupancy.directions.directions()
+
+    /**
+     * Why [client]'s oldest pending request is not granted, and who holds what it needs (for [GrantWait.OCCUPIED]),
+     * as `simulate` breaks the vehicles' held-back time down; [GrantWait.NONE_PENDING] when it asks for nothing.
+     */
+    fun grantWaitOf(client: String): Pair<GrantWait, Set<String>> {
+        val request = pending.head(client) ?: return GrantWait.NONE_PENDING to emptySet()
+        return when {
+            client in paused -> GrantWait.PAUSED to emptySet()
+            !occupancy.mayTake(client, request) -> GrantWait.OCCUPIED to occupancy.blockersOf(client, request).keys
+            request in deferred -> (refusedBy[request.seq] ?: GrantWait.LOCAL_RULE) to emptySet()
+            else -> GrantWait.NONE_PENDING to emptySet()
+        }
+    }
 
     /** [waitsFor] as a graph, for the deadlock detector. */
     fun waitForGraph(): WaitForGraph = WaitForGraph(waitsFor())
@@ -272,6 +292,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         process(retry)
         if (deferredSince.size > deferred.size) deferredSince.keys.retainAll(deferred.mapTo(HashSet()) { it.seq })
         if (parkRefusedAt.size > deferred.size) parkRefusedAt.keys.retainAll(deferred.mapTo(HashSet()) { it.seq })
+        if (refusedBy.size > deferred.size) refusedBy.keys.retainAll(deferred.mapTo(HashSet()) { it.seq })
     }
 
     private fun newRequest(client: SchedulerClient, resources: Set<String>): Request {
@@ -292,13 +313,20 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
             val request = queue.pollFirst()!!
             if (!pending.isHead(request) || !isGrantable(request)) continue
             val behind = keysOf(request.client.heldAfter(request.resources))
-            if (!safety.mayGrant(request.client.name, request.keys, behind) || !parkSafe(request, behind)) {
+            val refusal = when {
+                !safety.mayGrant(request.client.name, request.keys, behind) -> GrantWait.LOCAL_RULE
+                !parkSafe(request, behind) -> GrantWait.PARK_TEST
+                else -> null
+            }
+            if (refusal != null) {
+                refusedBy[request.seq] = refusal
                 deferred += request
                 deferredSince.putIfAbsent(request.seq, clock.elapsedMillis())
                 continue
             }
             deferredSince.remove(request.seq)
             parkRefusedAt.remove(request.seq)
+            refusedBy.remove(request.seq)
             pending.pop(request.client.name)?.let(queue::add)
             queue += pending.waitingFor(grant(request))
         }
@@ -308,7 +336,10 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     // local rule alone (whose holds the watchdog sees), so a plant the test judges too pessimistically never freezes.
     private fun parkSafe(request: Request, behind: Set<String>): Boolean {
         val since = deferredSince[request.seq]
-        if (since != null && clock.elapsedMillis() - since >= PARK_TEST_PATIENCE_MILLIS) return true
+        if (since != null && clock.elapsedMillis() - since >= PARK_TEST_PATIENCE_MILLIS) {
+            if (refusedBy[request.seq] == GrantWait.PARK_TEST) grantsAfterPatience++
+            return true
+        }
         if (parkRefusedAt[request.seq] == releases) return false
         if (parks.mayGrant(request.client.name, pointOf(request.resources), request.keys + behind)) return true
         parkRefusedAt[request.seq] = releases

@@ -15,9 +15,9 @@ data class Trip(val from: String, val loadOperation: String, val to: String, val
  * better: it would have to drive straight at full speed, never wait and never drive empty.
  */
 class LowerBound(private val model: PlantModel, private val operatingMillis: Long) {
-    private val router = DefaultRouter(RouterConfiguration(edgeEvaluators = listOf(EdgeEvaluator.TRAVELTIME))).also {
-        it.updateTopology(model)
-    }
+    private val router = DefaultRouter(
+        RouterConfiguration(edgeEvaluators = listOf(EdgeEvaluator.TRAVELTIME), operationPointSurcharge = 0),
+    ).also { it.updateTopology(model) }
     private val vehicle = model.vehicles.maxByOrNull { it.maxVelocity }
     private val costsFrom = HashMap<String, (String) -> Long?>()
 

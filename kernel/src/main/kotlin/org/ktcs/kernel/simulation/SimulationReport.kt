@@ -29,6 +29,7 @@ data class SimulationReport(
     val sharedPositions: Int = 0,
     val lowerBoundSeconds: Double = 0.0,
     val vehicleSeconds: Map<VehicleTimeUse, Double> = emptyMap(),
+    val heldBackLines: List<String> = emptyList(),
 ) {
     fun lines(): List<String> = listOf(
         "plant: $plant",
@@ -43,7 +44,7 @@ data class SimulationReport(
         "makespan_over_lower_bound: ${"%.2f".format(
             if (lowerBoundSeconds > 0) makespanSimulatedSeconds / lowerBoundSeconds else 0.0,
         )}",
-    ) + vehicleTimeLines() + listOf(
+    ) + vehicleTimeLines() + heldBackLines + listOf(
         "kernel_cpu_s: ${"%.2f".format(kernelCpuSeconds)}",
         "kernel_cpu_per_order_ms: ${"%.3f".format(
             if (ordersFinished == 0) 0.0 else kernelCpuSeconds * 1000 / ordersFinished,

@@ -19,6 +19,7 @@ import org.ktcs.kernel.dispatching.DefaultDispatcher
 import org.ktcs.kernel.dispatching.VehicleAvailability
 import org.ktcs.kernel.routerConfiguration
 import org.ktcs.kernel.routing.DefaultRouter
+import org.ktcs.kernel.scheduling.DefaultScheduler
 import java.lang.management.ManagementFactory
 import kotlin.random.Random
 
@@ -86,6 +87,7 @@ class SimulationRunner(
                 timeFactor,
                 kernel.core.orders::get,
             ) { it.startsWith(ORDER_PREFIX) }
+            val breakdown = (kernel.core.scheduler as? DefaultScheduler)?.let { HeldBackBreakdown(model, it) }
             var final = 0
             var lastProgress = 0L
             val creations = (0 until orders).map(::randomOrder)
@@ -108,6 +110,7 @@ class SimulationRunner(
             kernel.onKernel {
                 lastProgress = kernel.clock.elapsedMillis()
                 ledger.start(kernel.core.plant.vehicles())
+                breakdown?.let { sampleEvery(kernel, it) }
                 creations.forEach { kernel.core.createTransportOrder(it) }
                 // On the wall clock, creating thousands of orders takes a while: the wave starts with the last.
                 latencies.postedAt = kernel.clock.elapsedMillis()
@@ -133,6 +136,7 @@ class SimulationRunner(
                     sharedPositions = audit.sharedPositions,
                     lowerBoundSeconds = lowerBound(creations),
                     vehicleSeconds = ledger.totals().mapValues { it.value / 1000.0 },
+                    heldBackLines = breakdown?.lines().orEmpty() + patienceLine(kernel),
                 )
             }
         }
@@ -157,6 +161,21 @@ class SimulationRunner(
             grantsHeldBack = kernel.core.scheduler.grantsHeldBack,
         )
     }
+
+    // Sampling at a fixed kernel period (a twentieth of a watchdog period) changes no decision of the kernel.
+    private fun sampleEvery(kernel: SimulationKernel, breakdown: HeldBackBreakdown) {
+        kernel.clock.schedule(HELD_BACK_SAMPLE_MILLIS) {
+            breakdown.sample(kernel.core.plant.vehicles()) { it.startsWith(ORDER_PREFIX) }
+            sampleEvery(kernel, breakdown)
+        }
+    }
+
+    private fun patienceLine(kernel: SimulationKernel): List<String> =
+        listOfNotNull(
+            (kernel.core.scheduler as? DefaultScheduler)?.grantsAfterPatience?.let {
+                "grants_after_park_test_patience: $it"
+            },
+        )
 
     /** The loopback driver's setting [key] as configured, or `null` without the loopback extension. */
     private fun loopbackSetting(key: String): Any? =
@@ -190,6 +209,9 @@ class SimulationRunner(
 
         /** A simulated hour without any order ending means the fleet is stuck: stop and report. */
         const val STALL_LIMIT_MILLIS = 3_600_000L
+
+        /** How often the held-back vehicles are sampled, in kernel milliseconds. */
+        const val HELD_BACK_SAMPLE_MILLIS = 50L
     }
 }
 

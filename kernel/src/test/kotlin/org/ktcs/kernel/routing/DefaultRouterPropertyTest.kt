@@ -16,7 +16,10 @@ import org.ktcs.api.order.Route
 
 class DefaultRouterPropertyTest : FunSpec({
     fun GridCase.router(algorithm: RoutingAlgorithm = RoutingAlgorithm.DIJKSTRA) =
-        routerFor(model, RouterConfiguration(algorithm = algorithm, edgeEvaluators = evaluators))
+        routerFor(
+            model,
+            RouterConfiguration(algorithm = algorithm, edgeEvaluators = evaluators, operationPointSurcharge = 0),
+        )
 
     fun GridCase.shouldBeValid(route: Route, from: String, to: String) {
         if (from == to) {

@@ -35,7 +35,8 @@ class DefaultRouterRouteOrderTest : FunSpec({
     fun List<DriveOrder>.routePoints() = map { it.route.shouldNotBeNull().points }
 
     test("picks for each location the linked point that makes the whole order cheapest") {
-        val driveOrders = routerFor(twoLegs).routeOrder(vehicle(), "S", loadThenLeave).shouldNotBeNull()
+        val plainCosts = RouterConfiguration(operationPointSurcharge = 0)
+        val driveOrders = routerFor(twoLegs, plainCosts).routeOrder(vehicle(), "S", loadThenLeave).shouldNotBeNull()
 
         driveOrders.routePoints() shouldContainExactly listOf(listOf("S", "P2"), listOf("P2", "X", "E"))
         driveOrders.map { it.route?.costs } shouldContainExactly listOf(1500L, 1000L)

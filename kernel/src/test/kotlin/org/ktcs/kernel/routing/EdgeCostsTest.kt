@@ -1,11 +1,13 @@
 package org.ktcs.kernel.routing
 
+import io.kotest.assertions.throwables.shouldThrowWithMessage
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.nulls.shouldNotBeNull
 import io.kotest.matchers.shouldBe
 import org.ktcs.api.model.BoundingBox
+import org.ktcs.api.model.Link
 import org.ktcs.api.model.Point
 
 class EdgeCostsTest : FunSpec({
@@ -83,6 +85,41 @@ class EdgeCostsTest : FunSpec({
 
         test("reads the reverse property when driving backward") {
             routerFor(model, explicit).route("E", "D")?.costs shouldBe 7
+        }
+    }
+
+    context("a point linked to a location") {
+        // A → S → D passes the station S; A → C → D is 1 m longer.
+        val model = plant(
+            path("A", "S"),
+            path("S", "D"),
+            path("A", "C"),
+            path("C", "D", length = 2000),
+            locations = listOf(station("Station", Link("S"))),
+        )
+        val surcharged = RouterConfiguration(operationPointSurcharge = 200)
+
+        test("costs the surcharge more to drive onto, so a route only passing through goes round it") {
+            val route = routerFor(model, surcharged).route("A", "D").shouldNotBeNull()
+
+            route.points shouldContainExactly listOf("A", "C", "D")
+            route.costs shouldBe 3000
+        }
+
+        test("is passed through with the surcharge off (the default) or smaller than the detour") {
+            routerFor(model).route("A", "D")?.points shouldBe
+                listOf("A", "S", "D")
+            routerFor(model, RouterConfiguration(operationPointSurcharge = 50)).route("A", "D")?.costs shouldBe 2500
+        }
+
+        test("charges a route ending there the surcharge on its last path") {
+            routerFor(model, surcharged).route("A", "S")?.costs shouldBe 3000
+        }
+    }
+
+    test("a negative surcharge is refused, naming the setting") {
+        shouldThrowWithMessage<IllegalArgumentException>("operationPointSurcharge must not be negative, was -1") {
+            RouterConfiguration(operationPointSurcharge = -1)
         }
     }
 

@@ -22,7 +22,11 @@ class KeptSearchesTest : FunSpec({
 
     test("a router asked many questions in a row answers each as a search of its own would") {
         checkAll(150, gridCases) { case ->
-            val router = routerFor(case.model, RouterConfiguration(edgeEvaluators = case.evaluators))
+            val router =
+                routerFor(
+                    case.model,
+                    RouterConfiguration(edgeEvaluators = case.evaluators, operationPointSurcharge = 0),
+                )
             val points = case.model.points.map { it.name }.shuffled(Random(case.source.hashCode()))
             for (source in points) {
                 val cheapest = case.cheapestCostsFrom(source)
@@ -42,7 +46,7 @@ class KeptSearchesTest : FunSpec({
     ) {
         // A traffic grid has many routes of equal costs between two points; another tie-break picks other ones.
         val model = TrafficGrid(8, 8, vehicles = 4).build()
-        val configuration = RouterConfiguration()
+        val configuration = RouterConfiguration(operationPointSurcharge = 0)
         val costs = EdgeCosts(model, configuration, configuration.graphKeyOf(model.vehicles.first()))
         val graph = buildRoutingGraph(model, includeLocked = false, costs::of)
         val reference = DijkstraShortestPath(graph)
@@ -69,7 +73,7 @@ class KeptSearchesTest : FunSpec({
 
     test("a route that avoids resources neither uses nor changes the kept searches") {
         val model = detour.copy(locations = listOf(station("Station-D", Link("D"))))
-        val router = routerFor(model)
+        val router = routerFor(model, RouterConfiguration(operationPointSurcharge = 0))
         val toStation = Destination("Station-D", "LOAD")
         router.route("A", "D").shouldNotBeNull().points shouldContainExactly listOf("A", "B", "D")
 
