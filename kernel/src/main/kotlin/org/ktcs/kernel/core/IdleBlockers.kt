@@ -9,6 +9,7 @@ import org.ktcs.api.order.Operations
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.kernel.dispatching.PARK_ORDER_TYPE
 import org.ktcs.kernel.dispatching.VehicleAvailability
+import org.ktcs.kernel.routing.pointsLinkedToLocations
 import org.ktcs.kernel.scheduling.WaitForGraph
 import org.slf4j.LoggerFactory
 
@@ -85,7 +86,7 @@ class IdleBlockers(private val kernel: KernelCore, private val state: KernelStat
             other.claimedResources.forEach(taken::addAll)
         }
         val model = state.plant.layoutWithLocks()
-        val linked = model.locations.flatMapTo(HashSet()) { location -> location.links.map { it.point } }
+        val linked = model.pointsLinkedToLocations()
         val costs = kernel.router.costsFrom(vehicle, vehicle.currentPosition!!)
         return model.points.asSequence()
             .filter { it.name !in taken }

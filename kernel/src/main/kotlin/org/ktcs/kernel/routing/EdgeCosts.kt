@@ -18,7 +18,7 @@ internal class EdgeCosts(
     private val configuration: RouterConfiguration,
     private val key: GraphKey,
 ) {
-    private val operationPoints = model.locations.flatMap { location -> location.links.map { it.point } }.toSet()
+    private val operationPoints = model.pointsLinkedToLocations()
 
     fun of(path: Path, orientation: VehicleOrientation): Long? {
         var total = 0L

@@ -3,6 +3,7 @@ package org.ktcs.kernel.simulation
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.PointType
 import org.ktcs.api.model.Vehicle
+import org.ktcs.kernel.routing.pointsLinkedToLocations
 
 /** Gives a model exactly [count] vehicles, each with an initial position of its own. */
 object Fleet {
@@ -29,7 +30,7 @@ object Fleet {
 
     // Park positions first, then points no station is linked to, so vehicles do not start in front of stations.
     private fun startPoints(model: PlantModel): List<String> {
-        val linked = model.locations.flatMapTo(HashSet()) { location -> location.links.map { it.point } }
+        val linked = model.pointsLinkedToLocations()
         val (park, halt) = model.points.partition { it.type == PointType.PARK_POSITION }
         return park.map { it.name } + halt.map { it.name }.filter { it !in linked }
     }

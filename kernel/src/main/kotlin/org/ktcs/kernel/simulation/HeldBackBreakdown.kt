@@ -3,6 +3,7 @@ package org.ktcs.kernel.simulation
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.Vehicle
 import org.ktcs.api.model.VehicleState
+import org.ktcs.kernel.routing.pointsLinkedToLocations
 import org.ktcs.kernel.scheduling.DefaultScheduler
 import org.ktcs.kernel.scheduling.GrantWait
 
@@ -21,7 +22,7 @@ class HeldBackBreakdown(model: PlantModel, private val scheduler: DefaultSchedul
         .toMap()
     private val maxX = coordinates.values.maxOfOrNull { it.first } ?: 0
     private val maxY = coordinates.values.maxOfOrNull { it.second } ?: 0
-    private val stations = model.locations.flatMap { it.links.map { link -> link.point } }.toSet()
+    private val stations = model.pointsLinkedToLocations()
     private val places = HashMap<String?, String>()
     private val byReason = HashMap<String, Long>()
     private val byPlace = HashMap<String, Long>()

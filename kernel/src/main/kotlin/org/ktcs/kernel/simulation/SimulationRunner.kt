@@ -87,7 +87,9 @@ class SimulationRunner(
                 timeFactor,
                 kernel.core.orders::get,
             ) { it.startsWith(ORDER_PREFIX) }
-            val breakdown = (kernel.core.scheduler as? DefaultScheduler)?.let { HeldBackBreakdown(model, it) }
+            // The breakdown reads the kernel's own scheduler; a replaced one is not broken down.
+            val scheduler = kernel.core.scheduler as? DefaultScheduler
+            val breakdown = scheduler?.let { HeldBackBreakdown(model, it) }
             var final = 0
             var lastProgress = 0L
             val creations = (0 until orders).map(::randomOrder)
@@ -136,7 +138,7 @@ class SimulationRunner(
                     sharedPositions = audit.sharedPositions,
                     lowerBoundSeconds = lowerBound(creations),
                     vehicleSeconds = ledger.totals().mapValues { it.value / 1000.0 },
-                    heldBackLines = breakdown?.lines().orEmpty() + patienceLine(kernel),
+                    heldBackLines = breakdown?.lines().orEmpty() + patienceLine(scheduler),
                 )
             }
         }
@@ -170,12 +172,8 @@ class SimulationRunner(
         }
     }
 
-    private fun patienceLine(kernel: SimulationKernel): List<String> =
-        listOfNotNull(
-            (kernel.core.scheduler as? DefaultScheduler)?.grantsAfterPatience?.let {
-                "grants_after_park_test_patience: $it"
-            },
-        )
+    private fun patienceLine(scheduler: DefaultScheduler?): List<String> =
+        listOfNotNull(scheduler?.let { "grants_after_park_test_patience: ${it.grantsAfterPatience}" })
 
     /** The loopback driver's setting [key] as configured, or `null` without the loopback extension. */
     private fun loopbackSetting(key: String): Any? =
