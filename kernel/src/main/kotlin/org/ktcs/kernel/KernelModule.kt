@@ -13,9 +13,11 @@ import org.ktcs.api.service.KernelServices
 import org.ktcs.extension.InstalledDriverPanels
 import org.ktcs.extension.KernelDefaults
 import org.ktcs.extension.config.KtcsConfig
+import org.ktcs.extension.config.positiveDoubleSetting
 import org.ktcs.kernel.config.KtcsSettings
 import org.ktcs.kernel.config.WatchdogSettings
 import org.ktcs.kernel.context.KernelContext
+import org.ktcs.kernel.context.VehicleTimeClock
 import org.ktcs.kernel.core.KernelCore
 import org.ktcs.kernel.core.KernelOptions
 import org.ktcs.kernel.core.WatchdogOptions
@@ -37,13 +39,14 @@ import java.util.ServiceLoader
  * [org.ktcs.extension.KtcsExtension].
  */
 fun kernelModule(config: KtcsConfig, model: PlantModel, context: KernelContext): Module = module {
+    val options = kernelOptions(config)
     single { config }
     single { model }
     single<KernelContext> { context }
     single { routerConfiguration(config) }
     single { dispatcherConfiguration(config) }
     single<Router> { DefaultRouter(get()) }
-    single<Scheduler> { DefaultScheduler(get(), get<KernelContext>()) }
+    single<Scheduler> { DefaultScheduler(get(), VehicleTimeClock(get<KernelContext>(), options.vehicleTimeFactor)) }
     single<RecoveryEvaluator> { DefaultRecoveryEvaluator(config[KtcsSettings.dispatcherRecoveryThreshold]) }
     single<DispatchContext> { get<KernelCore>().dispatchContext }
     single<KernelDefaults> {
@@ -63,7 +66,7 @@ fun kernelModule(config: KtcsConfig, model: PlantModel, context: KernelContext):
             dispatcherProvider = { get<Dispatcher>() },
             recoveryEvaluator = get(),
             driverFactories = factories.distinctBy { it.name },
-            options = kernelOptions(config),
+            options = options,
         )
     }
     single { PublishedModelFile(Path.of(config[KtcsSettings.dataDirectory])) }
@@ -82,6 +85,7 @@ fun kernelOptions(config: KtcsConfig) = KernelOptions(
     sweepIntervalMillis = config[KtcsSettings.orderPoolSweepInterval],
     sweepAgeMillis = config[KtcsSettings.orderPoolSweepAge],
     deadlockCheckIntervalMillis = config[KtcsSettings.kernelDeadlockCheckInterval],
+    vehicleTimeFactor = config[loopbackTimeFactor],
     watchdog = WatchdogOptions(
         strandedVehicleCheckIntervalMillis = config[WatchdogSettings.strandedVehicleCheckInterval],
         strandedVehicleMillis = config[WatchdogSettings.strandedVehicleDuration],
@@ -90,6 +94,10 @@ fun kernelOptions(config: KtcsConfig) = KernelOptions(
         reportPositionOffRoute = config[WatchdogSettings.positionOffRoute],
     ),
 )
+
+// Declared and documented by the loopback extension; read here because simulated vehicles move that much faster than
+// the kernel clock (without the extension the key is never set: real vehicles, factor 1).
+private val loopbackTimeFactor = positiveDoubleSetting("loopback.timeFactor", 1.0, "See the loopback extension.")
 
 fun routerConfiguration(config: KtcsConfig) = RouterConfiguration(
     algorithm = config[KtcsSettings.routerAlgorithm],

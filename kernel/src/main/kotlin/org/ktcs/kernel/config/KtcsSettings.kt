@@ -96,8 +96,8 @@ object KtcsSettings {
         "kernel.deadlockCheckInterval",
         1000,
         0L..3_600_000L,
-        "Milliseconds between checks for vehicles waiting for each other in a cycle; a deadlock is reported and " +
-            "broken by rerouting (0: off).",
+        "Milliseconds of vehicle time (kernel time times loopback.timeFactor for simulated vehicles) between checks " +
+            "for vehicles waiting for each other in a cycle; a deadlock is reported and broken by rerouting (0: off).",
     )
     val kernelResourceManagement = enumSetting(
         "kernel.vehicleResourceManagement",

@@ -29,8 +29,11 @@ class DeadlockWatchdog(private val kernel: KernelCore, private val state: Kernel
     override val retreats: Int get() = retreating.sent
 
     fun start() {
-        val interval = kernel.options.deadlockCheckIntervalMillis
-        if (interval <= 0) return
+        // The period is vehicle time: at time factor 100 a check every kernel second would let vehicles drive 100 s
+        // between checks, and a retreat's cool-down of 60 checks outlast any stall timeout.
+        val options = kernel.options
+        if (options.deadlockCheckIntervalMillis <= 0) return
+        val interval = (options.deadlockCheckIntervalMillis / options.vehicleTimeFactor).toLong().coerceAtLeast(1)
         next = kernel.context.schedule(interval) {
             // A failing check is a bug to log, but must not end all later checks.
             try {

@@ -21,8 +21,13 @@ data class KernelOptions(
     val sweepIntervalMillis: Long = 60_000,
     /** How old a final order must be to be swept out (openTCS: orderpool.sweepAge). */
     val sweepAgeMillis: Long = 86_400_000,
-    /** How often the deadlock watchdog looks for vehicles waiting for each other in a cycle. */
+    /** How often the deadlock watchdog looks for vehicles waiting for each other in a cycle, in vehicle time. */
     val deadlockCheckIntervalMillis: Long = 1_000,
+    /**
+     * How many times faster than the kernel clock the vehicles move: the loopback's `loopback.timeFactor` in a
+     * simulation, 1 with real vehicles. Traffic control's timers (the watchdog period, patience) run in vehicle time.
+     */
+    val vehicleTimeFactor: Double = 1.0,
     /** openTCS's watchdog checks (stranded vehicles, waiting and late orders, positions off route). */
     val watchdog: WatchdogOptions = WatchdogOptions(),
 )

@@ -1,0 +1,32 @@
+package org.ktcs.kernel.core
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.shouldBe
+import org.ktcs.api.model.Path
+import org.ktcs.api.model.PlantModel
+import org.ktcs.api.model.Point
+
+class SideStepsTest : FunSpec({
+    // An aisle A1 - A2 - A3 - A4 (two-way) with a dead-end stub A2 - S, and a one-way exit A4 -> X.
+    fun twoWay(from: String, to: String) = Path("$from --- $to", from, to, maxReverseVelocity = 1000)
+    val plant = PlantModel(
+        "aisle with a stub",
+        points = listOf("A1", "A2", "A3", "A4", "S", "X").map(::Point),
+        paths = listOf(
+            twoWay("A1", "A2"),
+            twoWay("A2", "A3"),
+            twoWay("A3", "A4"),
+            twoWay("A2", "S"),
+            Path("A4 --- X", "A4", "X"),
+        ),
+    )
+
+    test("offers the free points up to two paths away, nearest first, in the directions paths allow") {
+        SideSteps().near(plant, "A2") { false } shouldBe listOf("A1", "A3", "S", "A4")
+        SideSteps().near(plant, "A4") { false } shouldBe listOf("A3", "X", "A2")
+    }
+
+    test("neither offers nor passes a taken point: the vehicle in the stub's way out stays out of the way") {
+        SideSteps().near(plant, "A2") { it == "A3" || it == "S" } shouldBe listOf("A1")
+    }
+})
