@@ -30,7 +30,10 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
         posted(ktcs, "create_8_clients$suffix", eight, CONCURRENT_CLIENTS, kind)
     }
 
-    /** Posts [batch] and records the rate, the client's CPU, and kTCS's CPU per POST (the process, the kernel thread). */
+    /**
+     * Posts [batch] and records the rate, the client's CPU, and kTCS's CPU per POST (the process, the kernel thread,
+     * the kinds of thread that used most), all over the same window: the POSTs alone, without the clients' set-up.
+     */
     private fun posted(
         ktcs: KtcsUnderTest,
         name: String,
@@ -38,27 +41,42 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
         clients: Int,
         kind: ClientKind,
     ): PostingResult {
-        val stats = ktcs.stats
-        val cpuStart = stats?.cpuSeconds()
-        val threadStart = stats?.threadCpuSeconds(KERNEL_THREAD)
-        val threadsStart = stats?.threads()
-        val result = OrderPosting.post(ktcs.client, batch, clients, kind)
+        val cpu = ktcs.stats?.let { CpuWindow(it) }
+        val result = OrderPosting.post(ktcs.client, batch, clients, kind, { cpu?.start() }, { cpu?.stop() })
         record(name, result)
-        if (stats != null && cpuStart != null) {
-            figures.record("${name}_cpu_per_post_ms", (stats.cpuSeconds() - cpuStart) * MILLIS / result.count)
-        }
-        if (stats != null && threadsStart != null) {
-            recordThreads(
-                name,
-                ThreadCpu.byKind(threadsStart, stats.threads()),
-                result.count,
-            )
-        }
-        val threadEnd = stats?.threadCpuSeconds(KERNEL_THREAD)
-        if (threadStart != null && threadEnd != null) {
-            figures.record("${name}_kernel_thread_cpu_per_post_ms", (threadEnd - threadStart) * MILLIS / result.count)
+        if (cpu == null) return result
+        figures.record("${name}_cpu_per_post_ms", cpu.processSeconds * MILLIS / result.count)
+        recordThreads(name, cpu.byKind, result.count)
+        cpu.kernelThreadSeconds?.let {
+            figures.record("${name}_kernel_thread_cpu_per_post_ms", it * MILLIS / result.count)
         }
         return result
+    }
+
+    /** kTCS's CPU between [start] and [stop]: the process's, the `kernel` thread's and by kind of thread. */
+    private class CpuWindow(private val stats: ProcStats) {
+        private var process = 0.0
+        private var kernelThread: Double? = null
+        private var threads: Map<Long, Pair<String, Double>> = emptyMap()
+        var processSeconds = 0.0
+            private set
+        var kernelThreadSeconds: Double? = null
+            private set
+        var byKind: List<Pair<String, Double>> = emptyList()
+            private set
+
+        fun start() {
+            process = stats.cpuSeconds()
+            kernelThread = stats.threadCpuSeconds(KERNEL_THREAD)
+            threads = stats.threads()
+        }
+
+        fun stop() {
+            processSeconds = stats.cpuSeconds() - process
+            val end = stats.threadCpuSeconds(KERNEL_THREAD)
+            kernelThreadSeconds = kernelThread?.let { start -> end?.let { it - start } }
+            byKind = ThreadCpu.byKind(threads, stats.threads())
+        }
     }
 
     /** The CPU per POST of the kinds of thread that used most, e.g. `create_8_clients_cpu_ms_per_post.kernel: 0.03`. */
@@ -97,6 +115,21 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
         figures.record("${name}_client_cpu_s", result.clientCpuSeconds)
         // 1.0 means the client kept one of the machine's cores busy: a rate it may have limited itself.
         figures.record("${name}_client_cpu_share", result.clientCpuSeconds / result.wallSeconds)
+        recordWindow(name, result)
+    }
+
+    /**
+     * Where the timed window went: the latencies' mean and tail (the rate follows the mean, not the p50), the first
+     * answer's time after the clock started, and the share of the summed latency spent in POSTs slower than 1 ms.
+     */
+    private fun recordWindow(name: String, result: PostingResult) {
+        val latencies = result.latenciesMillis
+        if (latencies.isEmpty()) return
+        figures.record("${name}_latency_mean_ms", latencies.average())
+        figures.record("${name}_latency_p99_ms", quantile(latencies, P99))
+        figures.record("${name}_latency_max_ms", latencies.max())
+        figures.record("${name}_first_answer_ms", result.answeredAtMillis.minOrNull())
+        figures.record("${name}_slow_share", latencies.filter { it > SLOW_MILLIS }.sum() / latencies.sum())
     }
 
     /**
@@ -169,6 +202,8 @@ class DemoWorkload(private val options: BenchOptions, private val figures: Figur
         private const val MILLIS = 1000.0
         private const val MEDIAN = 0.5
         private const val P95 = 0.95
+        private const val P99 = 0.99
+        private const val SLOW_MILLIS = 1.0
         private const val UNKNOWN_ORDER_WARM_UP = 300
         private const val UNKNOWN_ORDER_GETS = 2000
         private const val NOT_FOUND = 404
