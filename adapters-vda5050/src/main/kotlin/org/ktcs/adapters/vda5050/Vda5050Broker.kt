@@ -1,7 +1,10 @@
 package org.ktcs.adapters.vda5050
 
+import org.ktcs.adapters.vda5050.broker.BrokerConfig
+import org.ktcs.adapters.vda5050.broker.BuiltinBroker
 import org.ktcs.adapters.vda5050.mqtt.BrokerSettings
 import org.ktcs.adapters.vda5050.mqtt.EmbeddedBroker
+import org.ktcs.adapters.vda5050.mqtt.EmbeddedBrokerKind
 import org.ktcs.adapters.vda5050.mqtt.InProcessLink
 import org.ktcs.adapters.vda5050.mqtt.MessageLink
 import org.ktcs.adapters.vda5050.mqtt.MqttLink
@@ -16,7 +19,8 @@ import java.util.concurrent.RejectedExecutionException
  * when [settings] ask for it. Nothing starts until the first vehicle needs it, so a plant without VDA 5050 vehicles
  * pays nothing for the driver.
  *
- * With the embedded broker, the vehicles' messages and kTCS's orders take the [InProcessLink] inside the broker, and
+ * With the builtin embedded broker, the driver is a [BuiltinBroker] link itself: no client. With the embedded HiveMQ,
+ * the vehicles' messages and kTCS's orders take the [InProcessLink] inside the broker, and
  * the client carries only the `connection` topics (retained messages and last wills reach only a subscriber); with an
  * external broker the client carries everything.
  */
@@ -25,6 +29,7 @@ class Vda5050Broker(private val settings: BrokerSettings) : AutoCloseable {
     private var embedded: EmbeddedBroker? = null
     private var inProcess: InProcessLink? = null
     private var link: MqttLink? = null
+    private var builtin: BuiltinBroker? = null
 
     @Volatile private var closed = false
 
@@ -57,21 +62,30 @@ class Vda5050Broker(private val settings: BrokerSettings) : AutoCloseable {
         log.warn("could not send a message to a vehicle: {}", error.toString())
     }
 
-    /** The shared client, connecting (and starting the embedded broker) on first use. */
+    /** What carries the vehicles' connection messages; connects (and starts the embedded broker) on first use. */
     @Synchronized
-    fun link(): MqttLink = link ?: start()
-
-    /** What carries the vehicles' connection messages. */
-    fun connections(): MessageLink = link()
+    fun connections(): MessageLink = builtin ?: link ?: start()
 
     /** What carries every other vehicle message, and orders and instant actions. */
     @Synchronized
     fun messages(): MessageLink {
-        val client = link()
-        return inProcess ?: client
+        val connections = connections()
+        return inProcess ?: connections
     }
 
-    private fun start(): MqttLink {
+    private fun start(): MessageLink {
+        if (settings.isEmbedded && settings.implementation == EmbeddedBrokerKind.BUILTIN) {
+            val config = BrokerConfig(
+                settings.embeddedBindAddress,
+                settings.embeddedPort,
+                settings.username,
+                settings.password,
+            )
+            return BuiltinBroker(config).also {
+                it.start()
+                builtin = it
+            }
+        }
         if (settings.isEmbedded) {
             val tap = InProcessLink()
             embedded = EmbeddedBroker(settings.embeddedBindAddress, settings.embeddedPort, tap.extension)
@@ -93,6 +107,8 @@ class Vda5050Broker(private val settings: BrokerSettings) : AutoCloseable {
         if (sender.isInitialized()) sender.value.shutdown()
         link?.close()
         link = null
+        builtin?.close()
+        builtin = null
         inProcess = null
         embedded?.close()
         embedded = null

@@ -33,6 +33,7 @@ class Vda5050Extension : KtcsExtension {
             username = config[Vda5050Settings.username],
             password = config[Vda5050Settings.password],
             mapId = config[Vda5050Settings.mapId],
+            implementation = config[Vda5050Settings.embeddedImplementation],
         )
     }
 }

@@ -1,5 +1,6 @@
 package org.ktcs.adapters.vda5050
 
+import org.ktcs.adapters.vda5050.mqtt.EmbeddedBrokerKind
 import org.ktcs.extension.config.Setting
 import org.ktcs.extension.config.intSetting
 import org.ktcs.extension.config.stringSetting
@@ -26,15 +27,23 @@ object Vda5050Settings {
         1..65535,
         "The port the embedded MQTT broker listens on.",
     )
+    val embeddedImplementation = Setting(
+        "vda5050.embeddedBroker.implementation",
+        EmbeddedBrokerKind.BUILTIN,
+        "Which embedded MQTT broker kTCS starts: 'builtin' (its own, on Netty: the driver hears the vehicles on the " +
+            "broker's thread) or 'hivemq' (HiveMQ Community Edition).",
+        EmbeddedBrokerKind::of,
+    )
     val username = stringSetting(
         "vda5050.username",
         "",
-        "The user name kTCS gives the MQTT broker (empty: none).",
+        "The user name kTCS gives an external MQTT broker, and the one the builtin embedded broker asks of every " +
+            "client (empty: none).",
     )
     val password = stringSetting(
         "vda5050.password",
         "",
-        "The password kTCS gives the MQTT broker, with vda5050.username.",
+        "The password that goes with vda5050.username (given to an external broker, asked by the builtin one).",
     )
     val mapId = stringSetting(
         "vda5050.mapId",
@@ -42,5 +51,13 @@ object Vda5050Settings {
         "The mapId of the nodes in VDA 5050 orders unless a point or vehicle sets vda5050:mapId.",
     )
 
-    val all: List<Setting<*>> = listOf(brokerUrl, embeddedBindAddress, embeddedPort, username, password, mapId)
+    val all: List<Setting<*>> = listOf(
+        brokerUrl,
+        embeddedBindAddress,
+        embeddedPort,
+        embeddedImplementation,
+        username,
+        password,
+        mapId,
+    )
 }

@@ -72,6 +72,8 @@ class VdaPlant(
         "dispatcher.parkIdleVehicles=false",
         "dispatcher.rechargeIdleVehicles=false",
         if (brokerUrl == null) "vda5050.embeddedBroker.port=$brokerPort" else "vda5050.brokerUrl=$brokerUrl",
+        // `-Dktcs.test.embeddedBroker=hivemq` runs the VDA 5050 tests against the other embedded broker.
+        "vda5050.embeddedBroker.implementation=${System.getProperty("ktcs.test.embeddedBroker", "builtin")}",
     )
     val application = KernelApplication(config, model, listOf(Vda5050Extension()))
     private val base = Regex("web API (http://\\S+)/v1").find(application.start())!!.groupValues[1]

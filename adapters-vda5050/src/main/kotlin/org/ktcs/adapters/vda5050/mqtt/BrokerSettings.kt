@@ -4,7 +4,7 @@ import java.net.URI
 
 /**
  * Where the VDA 5050 vehicles' MQTT broker is: [url] `embedded` (kTCS starts its own broker on
- * [embeddedBindAddress]:[embeddedPort]) or `tcp://host:port` / `ssl://host:port` for an external one.
+ * [embeddedBindAddress]:[embeddedPort], the [implementation] chosen) or `tcp://host:port` / `ssl://host:port` for an external one.
  */
 data class BrokerSettings(
     val url: String = EMBEDDED,
@@ -13,6 +13,7 @@ data class BrokerSettings(
     val username: String = "",
     val password: String = "",
     val mapId: String = "",
+    val implementation: EmbeddedBrokerKind = EmbeddedBrokerKind.BUILTIN,
 ) {
     val isEmbedded: Boolean get() = url.trim().equals(EMBEDDED, ignoreCase = true)
 
@@ -55,4 +56,18 @@ data class BrokerSettings(
 /** A broker's host and port, and whether to speak TLS to it. */
 data class BrokerEndpoint(val host: String, val port: Int, val tls: Boolean) {
     override fun toString(): String = "${if (tls) "ssl" else "tcp"}://$host:$port"
+}
+
+/** Which embedded broker kTCS starts: its own ([BUILTIN]) or HiveMQ Community Edition. */
+enum class EmbeddedBrokerKind(private val text: String) {
+    BUILTIN("builtin"),
+    HIVEMQ("hivemq"),
+    ;
+
+    override fun toString(): String = text
+
+    companion object {
+        /** The kind written [text] (case ignored), or null. */
+        fun of(text: String): EmbeddedBrokerKind? = entries.firstOrNull { it.text.equals(text, ignoreCase = true) }
+    }
 }

@@ -4,11 +4,6 @@ import com.hivemq.embedded.EmbeddedExtension
 import com.hivemq.embedded.EmbeddedHiveMQ
 import org.ktcs.extension.config.ConfigException
 import org.slf4j.LoggerFactory
-import java.io.IOException
-import java.net.InetAddress
-import java.net.InetSocketAddress
-import java.net.ServerSocket
-import java.net.UnknownHostException
 import java.nio.file.Files
 import java.nio.file.Path
 import java.util.concurrent.ExecutionException
@@ -33,7 +28,7 @@ class EmbeddedBroker(
     /** Starts the broker; an address or port it cannot use is a [ConfigException] naming the setting. */
     fun start() {
         try {
-            checkPortFree()
+            BindCheck.check(bindAddress, port)
         } catch (error: ConfigException) {
             home.toFile().deleteRecursively()
             throw error
@@ -60,42 +55,11 @@ class EmbeddedBroker(
             runCatching { started.close() }
             home.toFile().deleteRecursively()
             throw ConfigException(
-                "the embedded MQTT broker could not start on $bindAddress:$port ($BIND_ADDRESS_KEY, $PORT_KEY): $problem",
+                "the embedded MQTT broker could not start on $bindAddress:$port (${BindCheck.BIND_ADDRESS_KEY}, ${BindCheck.PORT_KEY}): $problem",
             )
         }
         broker = started
         log.info("embedded MQTT broker listening on {}:{}", bindAddress, port)
-    }
-
-    /**
-     * HiveMQ reports an unusable address or a taken port only in its log, and kTCS would wait for it: say here which
-     * setting to change, as a [ConfigException] that stops kTCS at start-up with that one line.
-     */
-    private fun checkPortFree() {
-        val address = try {
-            InetAddress.getByName(bindAddress)
-        } catch (error: UnknownHostException) {
-            throw ConfigException("$BIND_ADDRESS_KEY '$bindAddress' is not a known host or address: ${error.message}")
-        }
-        if (!canBind(address, 0)) {
-            throw ConfigException(
-                "$BIND_ADDRESS_KEY '$bindAddress' cannot be used: it is not an address of this machine " +
-                    "(the embedded MQTT broker listens there; 127.0.0.1 for this machine, 0.0.0.0 for every interface)",
-            )
-        }
-        if (!canBind(address, port)) {
-            throw ConfigException(
-                "$PORT_KEY $port cannot be used: the embedded MQTT broker cannot listen on $bindAddress:$port " +
-                    "(in use or not allowed); choose a free port, or an external broker with vda5050.brokerUrl",
-            )
-        }
-    }
-
-    private fun canBind(address: InetAddress, port: Int): Boolean = try {
-        ServerSocket().use { it.bind(InetSocketAddress(address, port), 1) }
-        true
-    } catch (_: IOException) {
-        false
     }
 
     /** How many PUBLISH packets the broker has received from its clients since it started (HiveMQ's own counter). */
@@ -130,8 +94,6 @@ class EmbeddedBroker(
 
     private companion object {
         const val START_SECONDS = 60L
-        const val BIND_ADDRESS_KEY = "vda5050.embeddedBroker.bindAddress"
-        const val PORT_KEY = "vda5050.embeddedBroker.port"
         const val INCOMING_PUBLISHES = "com.hivemq.messages.incoming.publish.count"
     }
 }

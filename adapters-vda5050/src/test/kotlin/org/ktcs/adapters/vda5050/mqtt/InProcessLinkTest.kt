@@ -2,6 +2,7 @@ package org.ktcs.adapters.vda5050.mqtt
 
 import io.kotest.assertions.nondeterministic.eventually
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.core.spec.style.scopes.FunSpecContainerScope
 import io.kotest.matchers.collections.shouldContainExactly
 import io.kotest.matchers.collections.shouldContainExactlyInAnyOrder
 import io.kotest.matchers.shouldBe
@@ -9,28 +10,44 @@ import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.types.shouldBeInstanceOf
 import org.ktcs.adapters.vda5050.TcpRelay
 import org.ktcs.adapters.vda5050.Vda5050Broker
+import org.ktcs.adapters.vda5050.broker.BuiltinBroker
 import org.ktcs.adapters.vda5050.freePort
 import java.nio.ByteBuffer
 import java.util.Collections
 import kotlin.time.Duration.Companion.seconds
 
 /**
- * With the embedded broker, the driver hears the vehicles inside the broker and publishes through it: a vehicle's
+ * With either embedded broker, the driver hears the vehicles inside the broker and publishes through it: a vehicle's
  * messages (a retained one too) reach it without a second MQTT client decoding them, its messages reach the vehicle,
- * other subscribers still get everything, and the `connection` topic with the broker's last will comes through kTCS's
- * client.
+ * other subscribers still get everything, and the `connection` topic with the broker's last will reaches it (through
+ * kTCS's client with HiveMQ, from the builtin broker itself).
  */
 class InProcessLinkTest : FunSpec({
-    val port = freePort()
-    val broker = Vda5050Broker(BrokerSettings(embeddedPort = port))
+    EmbeddedBrokerKind.entries.forEach { kind ->
+        val port = freePort()
+        val broker = Vda5050Broker(BrokerSettings(embeddedPort = port, implementation = kind))
+        afterSpec { broker.close() }
+        context("the $kind broker") { inProcessLinkTests(kind, broker, port) }
+    }
+})
+
+private suspend fun FunSpecContainerScope.inProcessLinkTests(
+    kind: EmbeddedBrokerKind,
+    broker: Vda5050Broker,
+    port: Int,
+) {
     val endpoint = BrokerEndpoint("127.0.0.1", port, tls = false)
-    afterSpec { broker.close() }
 
     fun text(payload: ByteBuffer) = Charsets.UTF_8.decode(payload).toString()
     fun recorder() = Collections.synchronizedList(mutableListOf<Pair<String, String>>())
 
     test("the vehicle's messages reach the driver in the broker, and other subscribers too") {
-        broker.messages().shouldBeInstanceOf<InProcessLink>()
+        if (kind == EmbeddedBrokerKind.HIVEMQ) {
+            broker.messages().shouldBeInstanceOf<InProcessLink>()
+        } else {
+            broker.messages().shouldBeInstanceOf<BuiltinBroker>()
+            broker.connections().shouldBeInstanceOf<BuiltinBroker>()
+        }
         val vehicle = MqttLink("vehicle-1", endpoint).apply { connect() }
         val other = MqttLink("other", endpoint).apply { connect() }
         vehicle.publish("v/1/factsheet", "factsheet".toByteArray(), 1, retain = true).get()
@@ -59,7 +76,7 @@ class InProcessLinkTest : FunSpec({
         other.close()
     }
 
-    test("orders and instant actions reach the vehicle through the broker's publish service") {
+    test("orders and instant actions reach the vehicle through the broker") {
         val vehicle = MqttLink("vehicle-2", endpoint).apply { connect() }
         val received = recorder()
         listOf("order", "instantActions").forEach { topic ->
@@ -94,4 +111,4 @@ class InProcessLinkTest : FunSpec({
             relay.close()
         }
     }
-})
+}

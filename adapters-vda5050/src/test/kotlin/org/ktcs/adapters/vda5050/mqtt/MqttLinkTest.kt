@@ -14,7 +14,7 @@ import kotlin.time.Duration.Companion.seconds
 class MqttLinkTest : FunSpec({
     val port = freePort()
     val broker = Vda5050Broker(BrokerSettings(embeddedPort = port))
-    beforeSpec { broker.link() }
+    beforeSpec { broker.connections() }
     afterSpec { broker.close() }
 
     test("kTCS's client subscribes again after it lost the broker") {

@@ -8,6 +8,8 @@ import com.hivemq.extension.sdk.api.parameter.ExtensionStartOutput
 import com.hivemq.extension.sdk.api.parameter.ExtensionStopInput
 import com.hivemq.extension.sdk.api.parameter.ExtensionStopOutput
 import com.hivemq.extension.sdk.api.services.Services
+import org.ktcs.adapters.vda5050.broker.BrokerConfig
+import org.ktcs.adapters.vda5050.broker.BuiltinBroker
 import org.ktcs.adapters.vda5050.mqtt.BrokerEndpoint
 import org.ktcs.adapters.vda5050.mqtt.EmbeddedBroker
 import org.ktcs.adapters.vda5050.sim.SimulatedVehicle
@@ -24,21 +26,39 @@ import java.util.concurrent.TimeUnit
 data class StepFigures(val step: String, val messagesPerSecond: Double, val cpuMicros: Double, val switches: Double)
 
 /**
- * What each step of a vehicle message's way through kTCS's embedded broker costs, in the bench's process: the broker
- * alone (no extension: the floor), and the broker with a publish inbound interceptor that does nothing (HiveMQ hands
- * every message to its extension executor and back, the in-process link's hand-over without the link's work). Per
+ * What each step of a vehicle message's way through kTCS's embedded broker costs, in the bench's process: HiveMQ
+ * alone (no extension: its floor), HiveMQ with a publish inbound interceptor that does nothing (HiveMQ hands every
+ * message to its extension executor and back, the in-process link's hand-over without the link's work), and the
+ * builtin broker (whose in-process listeners run on its own thread: no hand-over to measure). Per
  * message received: CPU microseconds of the broker's and extension executor's threads and their context switches.
  */
 internal class BrokerSteps(private val model: PlantModel, private val simulator: SimulatorOptions) {
     fun run(rounds: Int): List<StepFigures> = (1..rounds).flatMap {
-        listOf(measure("broker alone", null), measure("do-nothing interceptor", doNothingExtension()))
+        listOf(
+            measure("HiveMQ alone") { port -> hiveMq(port, null) },
+            measure("HiveMQ + interceptor") { port -> hiveMq(port, doNothingExtension()) },
+            measure("builtin broker") { port -> builtin(port) },
+        )
     }
 
-    private fun measure(step: String, extension: EmbeddedExtension?): StepFigures {
+    /** A started broker, and how many PUBLISH packets it has received. */
+    private class Started(val broker: AutoCloseable, val publishesReceived: () -> Long)
+
+    private fun hiveMq(port: Int, extension: EmbeddedExtension?): Started {
+        val broker = EmbeddedBroker("127.0.0.1", port, extension).also { it.start() }
+        return Started(broker, broker::publishesReceived)
+    }
+
+    private fun builtin(port: Int): Started {
+        val broker = BuiltinBroker(BrokerConfig(port = port)).also { it.start() }
+        return Started(broker, broker::publishesReceived)
+    }
+
+    private fun measure(step: String, start: (Int) -> Started): StepFigures {
         val port = ServerSocket(0, 1, InetAddress.getLoopbackAddress()).use { it.localPort }
         val executor = Executors.newScheduledThreadPool(2) { Thread(it, "vda5050-sim").apply { isDaemon = true } }
-        EmbeddedBroker("127.0.0.1", port, extension).use { broker ->
-            broker.start()
+        val started = start(port)
+        started.broker.use {
             val endpoint = BrokerEndpoint("127.0.0.1", port, tls = false)
             val vehicles = simulatedVehicles(model, simulator).map { SimulatedVehicle(it, endpoint, executor) }
             try {
@@ -46,9 +66,9 @@ internal class BrokerSteps(private val model: PlantModel, private val simulator:
                 Thread.sleep(TimeUnit.SECONDS.toMillis(WARM_UP_SECONDS))
                 val cpu = ThreadCpu(ProcStats.self())
                 val switches = ThreadSwitches(ProcessHandle.current().pid())
-                val received = broker.publishesReceived()
+                val received = started.publishesReceived()
                 Thread.sleep(TimeUnit.SECONDS.toMillis(SECONDS))
-                val messages = (broker.publishesReceived() - received).coerceAtLeast(1).toDouble()
+                val messages = (started.publishesReceived() - received).coerceAtLeast(1).toDouble()
                 val groups = setOf(ThreadCpu.BROKER_GROUP, ThreadCpu.IN_PROCESS_GROUP)
                 val seconds = cpu.byGroup().filter { it.first in groups }.sumOf { it.second }
                 val woken = switches.byGroup().filterKeys { it in groups }.values.sum()

@@ -1,6 +1,7 @@
 package org.ktcs.adapters.vda5050.bench
 
 import org.ktcs.adapters.vda5050.Vda5050Broker
+import org.ktcs.adapters.vda5050.broker.BuiltinBroker
 import org.ktcs.kernel.bench.ProcStats
 
 /**
@@ -43,8 +44,10 @@ internal class ThreadCpu(private val stats: ProcStats) {
             else -> "other"
         }
 
-        // HiveMQ CE's threads (its event loops, persistence writers and timers) and the HiveMQ MQTT client's.
+        // The builtin broker's event loop (where the driver also reads the vehicles' messages), HiveMQ CE's threads
+        // (its event loops, persistence writers and timers) and the HiveMQ MQTT client's.
         private val BROKER = listOf(
+            BuiltinBroker.THREAD_NAME,
             "hivemq-",
             "single-writer",
             "payload-persist",

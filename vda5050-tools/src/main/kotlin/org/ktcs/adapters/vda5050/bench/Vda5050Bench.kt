@@ -1,7 +1,8 @@
 package org.ktcs.adapters.vda5050.bench
 
+import org.ktcs.adapters.vda5050.broker.BrokerConfig
+import org.ktcs.adapters.vda5050.broker.BuiltinBroker
 import org.ktcs.adapters.vda5050.mqtt.BrokerEndpoint
-import org.ktcs.adapters.vda5050.mqtt.EmbeddedBroker
 import org.ktcs.adapters.vda5050.mqtt.MqttLink
 import org.ktcs.adapters.vda5050.sim.SimulatedVehicle
 import org.ktcs.adapters.vda5050.sim.SimulatorOptions
@@ -43,11 +44,11 @@ data class Vda5050BenchOptions(
   vehicles. Prints the orders finished, kTCS's CPU seconds per finished order in both runs and their ratio (with and
   without the embedded broker's threads, which run in kTCS's process), kTCS's CPU by thread group, the
   broker round trip (publish to receive, QoS 0) p50/p99 measured every 100 ms during the VDA 5050 run, and the
-  floor: the embedded broker alone (in the bench's process) receiving the N simulated vehicles' messages with no
+  floor: the builtin embedded broker alone (in the bench's process) receiving the N simulated vehicles' messages with no
   subscriber for 20 s, its CPU per second and per finished order at the VDA 5050 run's order rate.
-  --broker-steps R runs only, R times alternately, the embedded broker receiving the N vehicles' messages alone and
-  with a do-nothing publish inbound interceptor, and prints per message the CPU and the context switches of the
-  broker's and its extension executor's threads."""
+  --broker-steps R runs only, R times alternately, HiveMQ receiving the N vehicles' messages alone and
+  with a do-nothing publish inbound interceptor, and the builtin broker alone, and prints per message the CPU and
+  the context switches of the broker's (and HiveMQ's extension executor's) threads."""
 
         fun parse(args: List<String>): Vda5050BenchOptions {
             var options = Vda5050BenchOptions()
@@ -159,7 +160,7 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
         val secondsPerOrder = vda.wallSeconds / vda.finished.coerceAtLeast(1)
         val perOrder = perSecond * secondsPerOrder
         println(
-            "floor: the embedded broker alone receiving %d vehicles' messages (no subscriber, %d s): %.1f ms CPU per s"
+            "floor: the builtin embedded broker alone receiving %d vehicles' messages (no subscriber, %d s): %.1f ms CPU per s"
                 .format(options.vehicles, FLOOR_SECONDS, perSecond) +
                 ", %.1f ms per finished order at the VDA 5050 run's rate (%.2f s per order), %.2f x loopback's"
                     .format(perOrder, secondsPerOrder, perOrder / loopback.cpuPerOrderMillis),
@@ -231,7 +232,7 @@ class Vda5050Bench(private val options: Vda5050BenchOptions, private val launche
     private fun brokerFloor(): Double {
         val port = freePort()
         val executor = Executors.newScheduledThreadPool(2) { Thread(it, "vda5050-sim").apply { isDaemon = true } }
-        EmbeddedBroker("127.0.0.1", port).use { broker ->
+        BuiltinBroker(BrokerConfig(port = port)).use { broker ->
             broker.start()
             val endpoint = BrokerEndpoint("127.0.0.1", port, tls = false)
             val vehicles = simulatedVehicles(vdaModel(), SimulatorOptions(timeFactor = options.timeFactor))
