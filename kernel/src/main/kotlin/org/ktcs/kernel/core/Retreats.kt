@@ -15,6 +15,7 @@ internal class Retreats(private val kernel: KernelCore) {
     private val lastSent = HashMap<String, Long>()
     private val targets = RetreatTargets()
     private val sideSteps = SideSteps()
+    private val sideStepsTaken = TakenSideSteps(COOLDOWN_CHECKS)
     private var checks = 0L
 
     /** How many retreats were sent. */
@@ -27,6 +28,7 @@ internal class Retreats(private val kernel: KernelCore) {
         checks++
         scheduler.retryOverdue()
         if (lastSent.size > 64) lastSent.values.removeIf { checks - it >= COOLDOWN_CHECKS }
+        sideStepsTaken.forgetOld(checks)
         targets.update(checks, scheduler::allocations)
         val ready = { vehicle: String -> lastSent[vehicle]?.let { checks - it < COOLDOWN_CHECKS } != true }
         // Every vehicle that can retreat now, each to a bay of its own: one per check was too few where most of the
@@ -49,14 +51,22 @@ internal class Retreats(private val kernel: KernelCore) {
     }
 
     // A head-on meeting at a dead-end stub's mouth has no way around and often no free bay in reach (real time
-    // stalled the warehouse that way in 3 of 5 runs through the web API): one of the two steps aside instead.
+    // stalled the warehouse that way in 3 of 5 runs through the web API): one of the two steps aside instead. A side
+    // step the vehicle took lately is not offered again: where it did not help, the vehicle came straight back into
+    // the same knot, and the watchdog sent it to the same point hundreds of times (twice a second through the web
+    // API) while the fleet stood still; another vehicle of the knot, or another point, gets the next try.
     private fun stepAside(vehicle: String, knot: List<String>, allocations: Map<String, Set<String>>): Boolean {
         val from = kernel.plant.vehicle(vehicle).currentPosition ?: return false
         val needs = (kernel.scheduler as? DefaultScheduler)?.let { scheduler -> scheduler::needs }
         val taken = knot.filter { it != vehicle }.flatMapTo(HashSet()) { needs?.invoke(it).orEmpty() }
         allocations.forEach { (holder, held) -> if (holder != vehicle) taken += held }
         return sideSteps.near(kernel.plant.layoutWithLocks(), from) { it in taken }
-            .any { send(vehicle, it, allocations, "of a deadlock, stepping aside") }
+            .filterNot { sideStepsTaken.isRecent(vehicle, it, checks) }
+            .any { point ->
+                send(vehicle, point, allocations, "of a deadlock, stepping aside").also { sent ->
+                    if (sent) sideStepsTaken.add(vehicle, point, checks)
+                }
+            }
     }
 
     private fun send(vehicle: String, park: String, allocations: Map<String, Set<String>>, why: String): Boolean {
@@ -72,6 +82,24 @@ internal class Retreats(private val kernel: KernelCore) {
 
     private companion object {
         const val COOLDOWN_CHECKS = 60L
+    }
+}
+
+/** The side steps vehicles took ([Retreats]), each remembered for [memoryChecks] watchdog checks. */
+internal class TakenSideSteps(private val memoryChecks: Long) {
+    private val takenAt = HashMap<Pair<String, String>, Long>()
+
+    fun add(vehicle: String, point: String, check: Long) {
+        takenAt[vehicle to point] = check
+    }
+
+    /** Whether [vehicle] stepped aside to [point] within the last [memoryChecks] checks before [check]. */
+    fun isRecent(vehicle: String, point: String, check: Long): Boolean =
+        takenAt[vehicle to point]?.let { check - it < memoryChecks } == true
+
+    /** Forgets the side steps older than the memory, so the map holds only the recent ones. */
+    fun forgetOld(check: Long) {
+        if (takenAt.isNotEmpty()) takenAt.values.removeIf { check - it >= memoryChecks }
     }
 }
 

@@ -29,4 +29,21 @@ class SideStepsTest : FunSpec({
     test("neither offers nor passes a taken point: the vehicle in the stub's way out stays out of the way") {
         SideSteps().near(plant, "A2") { it == "A3" || it == "S" } shouldBe listOf("A1")
     }
+
+    test("a side step a vehicle took is not offered to it again until the memory has passed, nor kept longer") {
+        val taken = TakenSideSteps(memoryChecks = 60)
+        taken.add("V1", "S", check = 10)
+
+        taken.isRecent("V1", "S", check = 11) shouldBe true
+        taken.isRecent("V1", "S", check = 69) shouldBe true
+        taken.isRecent("V1", "A1", check = 11) shouldBe false // another point for the same vehicle
+        taken.isRecent("V2", "S", check = 11) shouldBe false // the same point for another vehicle
+        taken.isRecent("V1", "S", check = 70) shouldBe false
+
+        taken.forgetOld(check = 70)
+        taken.add("V1", "A1", check = 70)
+        taken.forgetOld(check = 129)
+        taken.isRecent("V1", "A1", check = 129) shouldBe true
+        taken.isRecent("V1", "S", check = 71) shouldBe false // forgotten, not merely expired
+    }
 })
