@@ -58,9 +58,10 @@ internal class Retreats(private val kernel: KernelCore) {
     private fun stepAside(vehicle: String, knot: List<String>, allocations: Map<String, Set<String>>): Boolean {
         val from = kernel.plant.vehicle(vehicle).currentPosition ?: return false
         val needs = (kernel.scheduler as? DefaultScheduler)?.let { scheduler -> scheduler::needs }
-        val taken = knot.filter { it != vehicle }.flatMapTo(HashSet()) { needs?.invoke(it).orEmpty() }
-        allocations.forEach { (holder, held) -> if (holder != vehicle) taken += held }
-        return sideSteps.near(kernel.plant.layoutWithLocks(), from) { it in taken }
+        val needed = knot.filter { it != vehicle }.flatMapTo(HashSet()) { needs?.invoke(it).orEmpty() }
+        val held = HashSet<String>()
+        allocations.forEach { (holder, resources) -> if (holder != vehicle) held += resources }
+        return sideSteps.near(kernel.plant.layoutWithLocks(), from, held::contains, needed::contains)
             .filterNot { sideStepsTaken.isRecent(vehicle, it, checks) }
             .any { point ->
                 send(vehicle, point, allocations, "of a deadlock, stepping aside").also { sent ->

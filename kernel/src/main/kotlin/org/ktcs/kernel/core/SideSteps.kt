@@ -4,17 +4,27 @@ import org.ktcs.api.model.PlantModel
 
 /**
  * Where a vehicle of a deadlock can step aside when no reroute and no free park bay breaks it: the points up to
- * [MAX_HOPS] paths from where it stands, over points nobody holds, nearest first. Two vehicles head-on at the mouth of
- * a dead-end station stub (one in the aisle wants in, the other wants out) are broken that way: the one in the aisle
- * steps to an aisle point the other does not need, lets it out and comes back. The caller says which points are
- * taken (held, or needed by the other vehicles of the deadlock); the router then checks the way there and back.
+ * [MAX_HOPS] paths from where it stands, over points nobody holds, nearest first, that the other vehicles of the
+ * deadlock do not need. Two vehicles head-on at the mouth of a dead-end station stub (one in the aisle wants in, the
+ * other wants out) are broken that way: the one in the aisle steps to an aisle point the other does not need, lets it
+ * out and comes back. Two vehicles head-on inside an aisle, or at its end, need more: one backs off along the other's
+ * way (points the other needs but nobody holds may be passed, not stopped on) into a stub or a cross aisle beyond it.
+ * The caller says which points are held and which are needed; the router then checks the way there and back.
  */
 internal class SideSteps {
     private var model: PlantModel? = null
     private var next: Map<String, List<String>> = emptyMap()
 
-    /** The free points near [from] in [layout], nearest first; [taken] points are neither passed nor offered. */
-    fun near(layout: PlantModel, from: String, taken: (String) -> Boolean): List<String> {
+    /**
+     * The free points near [from] in [layout], nearest first: [held] points are neither passed nor offered, [needed]
+     * ones are passed but not offered.
+     */
+    fun near(
+        layout: PlantModel,
+        from: String,
+        held: (String) -> Boolean,
+        needed: (String) -> Boolean = { false },
+    ): List<String> {
         if (layout !== model) {
             next = successors(layout)
             model = layout
@@ -23,8 +33,8 @@ internal class SideSteps {
         var frontier = listOf(from)
         val seen = hashSetOf(from)
         repeat(MAX_HOPS) {
-            frontier = frontier.flatMap { next[it].orEmpty() }.filter { !taken(it) && seen.add(it) }
-            found += frontier
+            frontier = frontier.flatMap { next[it].orEmpty() }.filter { !held(it) && seen.add(it) }
+            frontier.filterTo(found) { !needed(it) }
         }
         return found
     }
@@ -39,7 +49,10 @@ internal class SideSteps {
     }
 
     private companion object {
-        /** Far enough to clear a stub's mouth and the aisle point beside it, near enough to come back soon. */
-        const val MAX_HOPS = 2
+        /**
+         * Far enough to back off past the next stub or out of an aisle's end onto a cross aisle, near enough to come
+         * back soon (the nearest point is offered first).
+         */
+        const val MAX_HOPS = 4
     }
 }

@@ -21,13 +21,19 @@ class SideStepsTest : FunSpec({
         ),
     )
 
-    test("offers the free points up to two paths away, nearest first, in the directions paths allow") {
-        SideSteps().near(plant, "A2") { false } shouldBe listOf("A1", "A3", "S", "A4")
-        SideSteps().near(plant, "A4") { false } shouldBe listOf("A3", "X", "A2")
+    test("offers the free points up to four paths away, nearest first, in the directions paths allow") {
+        SideSteps().near(plant, "A2", held = { false }) shouldBe listOf("A1", "A3", "S", "A4", "X")
+        SideSteps().near(plant, "A4", held = { false }) shouldBe listOf("A3", "X", "A2", "A1", "S")
     }
 
-    test("neither offers nor passes a taken point: the vehicle in the stub's way out stays out of the way") {
-        SideSteps().near(plant, "A2") { it == "A3" || it == "S" } shouldBe listOf("A1")
+    test("neither offers nor passes a held point: the vehicle in the stub's way out stays out of the way") {
+        SideSteps().near(plant, "A2", held = { it == "A3" || it == "S" }) shouldBe listOf("A1")
+    }
+
+    // Head-on in the aisle: the vehicle at A4 backs off along the other's way (A3, A2) into the stub or to A1.
+    test("passes a point another vehicle of the deadlock needs but does not stop on it") {
+        val needed = setOf("A3", "A2")
+        SideSteps().near(plant, "A4", held = { false }, needed = needed::contains) shouldBe listOf("X", "A1", "S")
     }
 
     test("a side step a vehicle took is not offered to it again until the memory has passed, nor kept longer") {
@@ -44,6 +50,6 @@ class SideStepsTest : FunSpec({
         taken.add("V1", "A1", check = 70)
         taken.forgetOld(check = 129)
         taken.isRecent("V1", "A1", check = 129) shouldBe true
-        taken.isRecent("V1", "S", check = 71) shouldBe false // forgotten, not merely expired
+        taken.isRecent("V1", "S", check = 11) shouldBe false // forgotten: asked as of an earlier check, it is gone
     }
 })
