@@ -30,6 +30,8 @@ data class SimulationReport(
     val lowerBoundSeconds: Double = 0.0,
     val vehicleSeconds: Map<VehicleTimeUse, Double> = emptyMap(),
     val heldBackLines: List<String> = emptyList(),
+    /** For a batch that stalled, the vehicles standing with an order and what each waits for ([stalledVehicleLines]). */
+    val stalledLines: List<String> = emptyList(),
 ) {
     fun lines(): List<String> = listOf(
         "plant: $plant",
@@ -69,7 +71,7 @@ data class SimulationReport(
         "idle_vehicles_moved: $idleVehiclesMoved",
         "double_allocations: $doubleAllocations",
         "shared_positions: $sharedPositions",
-    )
+    ) + stalledLines
 
     /** Where the vehicles' time went, summed over vehicles, with each use's share of the fleet's time. */
     private fun vehicleTimeLines(): List<String> {

@@ -139,6 +139,7 @@ class SimulationRunner(
                     lowerBoundSeconds = lowerBound(creations),
                     vehicleSeconds = ledger.totals().mapValues { it.value / 1000.0 },
                     heldBackLines = breakdown?.lines().orEmpty() + patienceLine(scheduler),
+                    stalledLines = if (final >= orders) emptyList() else stalledLines(kernel, scheduler),
                 )
             }
         }
@@ -171,6 +172,13 @@ class SimulationRunner(
             sampleEvery(kernel, breakdown)
         }
     }
+
+    private fun stalledLines(kernel: SimulationKernel, scheduler: DefaultScheduler?): List<String> =
+        stalledVehicleLines(
+            kernel.core.plant.vehicles(),
+            { vehicle -> scheduler?.grantWaitOf(vehicle)?.first?.label ?: "unknown" },
+            kernel.core.scheduler.waitsFor(),
+        )
 
     private fun patienceLine(scheduler: DefaultScheduler?): List<String> =
         listOfNotNull(scheduler?.let { "grants_after_park_test_patience: ${it.grantsAfterPatience}" })
