@@ -30,7 +30,7 @@ data class SimulationReport(
     val lowerBoundSeconds: Double = 0.0,
     val vehicleSeconds: Map<VehicleTimeUse, Double> = emptyMap(),
     val heldBackLines: List<String> = emptyList(),
-    /** For a batch that stalled, the vehicles standing with an order and what each waits for ([stalledVehicleLines]). */
+    /** For a stalled batch, the vehicles standing with an order and what each waits for ([stalledVehicleLines]). */
     val stalledLines: List<String> = emptyList(),
 ) {
     fun lines(): List<String> = listOf(

@@ -19,6 +19,7 @@ internal fun stalledVehicleLines(
     .map { vehicle ->
         val whom = waitsFor[vehicle.name].orEmpty().entries.sortedBy { it.key }
             .joinToString(", ") { (other, resources) -> "$other (${resources.sorted().joinToString(", ")})" }
-        "stalled_vehicle: ${vehicle.name} at ${vehicle.currentPosition ?: "no position"} with ${vehicle.transportOrder}: " +
-            waitOf(vehicle.name) + if (whom.isEmpty()) "" else ", waits for $whom"
+        val position = vehicle.currentPosition ?: "no position"
+        val waits = if (whom.isEmpty()) "" else ", waits for $whom"
+        "stalled_vehicle: ${vehicle.name} at $position with ${vehicle.transportOrder}: ${waitOf(vehicle.name)}$waits"
     }
