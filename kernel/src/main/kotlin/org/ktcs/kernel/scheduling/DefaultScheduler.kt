@@ -362,8 +362,13 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         /** Two watchdog periods: shorter refusals are queues moving along, not vehicles stuck face to face. */
         const val HELD_BACK_REPORT_MILLIS = 2_000L
 
-        /** How long the park test may hold a grant back before the local rule alone decides it. */
-        const val PARK_TEST_PATIENCE_MILLIS = 10_000L
+        /**
+         * How long (vehicle time) the park test may hold a grant back before the local rule alone decides it. On the
+         * warehouse most of the test's refusals end by this patience, not by a release, so it sets the pace there: 5 s
+         * against 10 s cut the makespan by a third and stalled fewer seeds (22 of 24 finished, against 20); the grids
+         * never reach it (guide, section 12).
+         */
+        const val PARK_TEST_PATIENCE_MILLIS = 5_000L
         private val log = LoggerFactory.getLogger(DefaultScheduler::class.java)
     }
 }
