@@ -8,8 +8,11 @@ import org.ktcs.api.model.PlantModel
 /** The path property naming the direction in which a path enters a SAME_DIRECTION_ONLY block (openTCS). */
 const val BLOCK_ENTRY_DIRECTION: String = "tcs:blockEntryDirection"
 
-/** A SAME_DIRECTION_ONLY block a request touches, and the direction it enters it in (`null`: no entering path). */
-internal class BlockEntry(val block: Block, val direction: String?)
+/**
+ * A SAME_DIRECTION_ONLY block a request touches, and the direction it enters it in (`null`: no entering path); for a
+ * corridor ([Corridors]), whether the request comes into it from outside ([entering]) or drives on inside.
+ */
+internal class BlockEntry(val block: Block, val direction: String?, val entering: Boolean = true)
 
 /** Which blocks each resource belongs to, by block type; built once per model. */
 internal class BlockIndex(private val model: PlantModel) {

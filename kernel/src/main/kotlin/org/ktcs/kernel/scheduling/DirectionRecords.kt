@@ -16,6 +16,9 @@ internal class DirectionRecords {
 
     fun users(block: String): Set<String> = usages[block]?.heldMembers?.keys.orEmpty()
 
+    /** The direction the users of [block] entered it in; `null` if nobody uses it or the direction is unknown. */
+    fun direction(block: String): String? = usages[block]?.direction
+
     /** The direction of every block in use whose direction is known, by block name. */
     fun directions(): Map<String, String> =
         usages.mapNotNull { (block, usage) -> usage.direction?.let { block to it } }.toMap()
@@ -26,6 +29,14 @@ internal class DirectionRecords {
         return client in usage.heldMembers ||
             usage.heldMembers.isEmpty() ||
             (entry.direction != null && entry.direction == usage.direction)
+    }
+
+    /** [admits] for a corridor ([Corridors]): a client coming into it ([BlockEntry.entering]) counts as outside. */
+    fun admitsHeading(entry: BlockEntry, client: String): Boolean {
+        val usage = usages[entry.block.name] ?: return true
+        if (usage.heldMembers.keys.none { it != client }) return true
+        if (entry.direction != null && entry.direction == usage.direction) return true
+        return !entry.entering && client in usage.heldMembers
     }
 
     /**

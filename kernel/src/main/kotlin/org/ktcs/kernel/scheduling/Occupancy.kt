@@ -7,21 +7,39 @@ package org.ktcs.kernel.scheduling
  * Resource and block names double as wake-up keys: the release functions return the keys whose change may let a
  * waiting request through (block names are unique among all model objects, so they never clash with resources).
  */
-internal class Occupancy(private val blocks: BlockIndex) {
+internal class Occupancy(private val blocks: BlockIndex, private val corridors: Corridors) {
     private val holders = HashMap<String, MutableSet<String>>()
     private val held = HashMap<String, MutableSet<String>>()
     private val requested = HashMap<String, MutableSet<String>>()
     val directions = DirectionRecords()
+    val corridorDirections = DirectionRecords()
 
-    /** What [client] holds as deadlock avoidance counts it: its resources and the SAME_DIRECTION_ONLY blocks it uses. */
+    /**
+     * What [client] holds as deadlock avoidance counts it: its resources, the SAME_DIRECTION_ONLY blocks it uses and,
+     * per corridor it drives along, the way in for vehicles heading the other way ([Corridors.heldKeys]).
+     */
     fun holdingKeys(client: String): Set<String> {
         val mine = held[client] ?: return emptySet()
         val used = mine.flatMap { blocks.sameDirectionBlocksOf(it) }
-        return if (used.isEmpty()) mine else mine + used.map { it.name }
+        val along = mine.mapNotNullTo(HashSet()) { corridors.blockOf(it)?.name }
+        if (used.isEmpty() && along.isEmpty()) return mine
+        return mine + used.map { it.name } +
+            along.flatMap { Corridors.heldKeys(it, corridorDirections.direction(it)) }
     }
 
-    /** Who holds [key], a resource or the name of a SAME_DIRECTION_ONLY block. */
-    fun holdersOf(key: String): Collection<String> = holders[key] ?: directions.users(key)
+    /** Who holds [key]: a resource, the name of a SAME_DIRECTION_ONLY block or a corridor's need key. */
+    fun holdersOf(key: String): Collection<String> {
+        holders[key]?.let { return it }
+        if (!Corridors.isDirectionKey(key)) return directions.users(key)
+        val block = Corridors.blockOfKey(key)
+        val direction = corridorDirections.direction(block)
+        val heading = Corridors.directionOfKey(key)
+        return if (heading == null || direction == null || direction != heading) {
+            corridorDirections.users(block)
+        } else {
+            emptySet()
+        }
+    }
 
     /** The clients holding anything. */
     fun clients(): Set<String> = held.keys
@@ -29,7 +47,10 @@ internal class Occupancy(private val blocks: BlockIndex) {
     fun snapshot(): Map<String, Set<String>> = held.mapValues { it.value.toSet() }
 
     fun mayTake(client: String, request: Request): Boolean =
-        request.expanded.all { isAvailable(it, client) } && request.entries.all { directions.admits(it, client) }
+        request.expanded.all { isAvailable(it, client) } &&
+            request.entries.all { directions.admits(it, client) } &&
+            request.corridors.all { corridorDirections.admitsHeading(it, client) } &&
+            request.gates.all { corridorDirections.admitsHeading(it, client) }
 
     /** The other clients standing in the way of [request], with the resources they block. */
     fun blockersOf(client: String, request: Request): Map<String, Set<String>> {
@@ -41,6 +62,12 @@ internal class Occupancy(private val blocks: BlockIndex) {
             val others = directions.users(entry.block.name) - client
             others.forEach { blockers.getOrPut(it, ::HashSet) += entry.block.members }
         }
+        for (entry in (request.corridors + request.gates).filterNot { corridorDirections.admitsHeading(it, client) }) {
+            val others = corridorDirections.users(entry.block.name) - client
+            for (other in others) {
+                blockers.getOrPut(other, ::HashSet) += entry.block.members.filter { other in holders[it].orEmpty() }
+            }
+        }
         return blockers
     }
 
@@ -51,6 +78,8 @@ internal class Occupancy(private val blocks: BlockIndex) {
     /** Gives [request] to [client], whoever holds it. */
     fun take(client: String, request: Request): Taken {
         val redirected = request.entries.filter { directions.enter(it, client) }.mapTo(HashSet()) { it.block.name }
+        request.corridors.filter { corridorDirections.enter(it, client) }
+            .forEach { redirected += Corridors.heldKeys(it.block.name, null) }
         val mine = requested.getOrPut(client, ::HashSet)
         val added = request.resources.filterTo(HashSet()) { mine.add(it) }
         request.expanded.forEach { hold(client, it) }
@@ -85,6 +114,7 @@ internal class Occupancy(private val blocks: BlockIndex) {
         if (!held.getOrPut(client, ::HashSet).add(resource)) return
         holders.getOrPut(resource, ::LinkedHashSet) += client
         blocks.sameDirectionBlocksOf(resource).forEach { directions.memberTaken(it, client) }
+        corridors.blockOf(resource)?.let { corridorDirections.memberTaken(it, client) }
     }
 
     // Any holder leaving is a wake-up, not only the last: after allocateNow the remaining holder may be waiting.
@@ -95,7 +125,9 @@ internal class Occupancy(private val blocks: BlockIndex) {
         val others = holders.getValue(resource).apply { remove(client) }
         if (others.isEmpty()) holders.remove(resource)
         val left = blocks.sameDirectionBlocksOf(resource).filter { directions.memberReleased(it, client) }
-        return listOf(resource) + left.map { it.name }
+        val leftCorridor = corridors.blockOf(resource)?.takeIf { corridorDirections.memberReleased(it, client) }
+        val corridorKeys = leftCorridor?.let { Corridors.heldKeys(it.name, null) }.orEmpty()
+        return listOf(resource) + left.map { it.name } + corridorKeys
     }
 }
 

@@ -40,11 +40,11 @@ internal class PendingRequests {
     fun snapshot(): Map<String, List<Set<String>>> = queues.mapValues { (_, queue) -> queue.map { it.resources } }
 
     private fun index(request: Request) {
-        request.keys.forEach { waiters.getOrPut(it, ::HashSet) += request }
+        request.wakeKeys.forEach { waiters.getOrPut(it, ::HashSet) += request }
     }
 
     private fun unindex(request: Request) {
-        for (key in request.keys) {
+        for (key in request.wakeKeys) {
             val heads = waiters[key] ?: continue
             heads -= request
             if (heads.isEmpty()) waiters.remove(key)

@@ -2,14 +2,44 @@ package org.ktcs.kernel.scheduling
 
 import org.ktcs.api.scheduling.SchedulerClient
 
-/** A client's request for resources, numbered in arrival order. */
+/**
+ * A client's request for resources, numbered in arrival order; [corridors] are the two-way corridors it drives along
+ * ([Corridors]), each with the way it heads, and [gates] those the client's route comes into right after it: it may
+ * take the corridor's end (which the vehicles driving out need) only once it may come in.
+ */
 internal class Request(
     val seq: Long,
     val client: SchedulerClient,
     val resources: Set<String>,
     val expanded: Set<String>,
     val entries: List<BlockEntry>,
+    val corridors: List<BlockEntry> = emptyList(),
+    val gates: List<BlockEntry> = emptyList(),
 ) {
-    /** What the request may wait for: its resources and the SAME_DIRECTION_ONLY blocks it touches. */
-    val keys: Set<String> = expanded + entries.map { it.block.name }
+    /**
+     * What the request may wait for: its resources, the SAME_DIRECTION_ONLY blocks it touches and, per corridor it
+     * comes into, that nobody uses it the other way.
+     */
+    val keys: Set<String> =
+        expanded + entries.map { it.block.name } +
+            corridors.filter { it.entering }.map { Corridors.needKey(it.block.name, it.direction) }
+
+    /**
+     * The keys whose change may let the request through, for [PendingRequests]: its [keys] plus, per corridor it
+     * touches or waits to come into ([gates]), the need key of the way it heads, whether or not it comes into it.
+     * Whether a step comes into a corridor is decided when it is asked for; a vehicle inside then may have left by
+     * the time the step is looked at again (it drove into a stub beside the corridor, covering the aisle point with
+     * its length when it asked for the way back out), and then waits for the corridor's direction like any other.
+     * The corridor's records give these keys back whenever its direction changes or a user leaves ([Occupancy]).
+     */
+    val wakeKeys: Set<String> =
+        if (corridors.isEmpty() && gates.isEmpty()) {
+            keys
+        } else {
+            keys + (corridors + gates).map { Corridors.needKey(it.block.name, it.direction) }
+        }
+
+    /** [keys] without corridor need keys: what holding the granted request means (the client never holds those). */
+    val physicalKeys: Set<String>
+        get() = if (corridors.isEmpty()) keys else keys.filterNotTo(HashSet(), Corridors::isDirectionKey)
 }

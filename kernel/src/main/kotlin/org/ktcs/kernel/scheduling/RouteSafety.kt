@@ -14,7 +14,9 @@ package org.ktcs.kernel.scheduling
  * queue of vehicles ahead of v, not the plant.
  *
  * Keys are resource names plus the names of SAME_DIRECTION_ONLY blocks (treated as exclusive here, a conservative
- * simplification); SINGLE_VEHICLE_ONLY blocks are expanded to their members by the caller.
+ * simplification) and, per two-way corridor a step drives along, its need key ([Corridors.needKey]): a vehicle
+ * heading one way along a corridor holds the need keys of the other ways in ([Corridors.heldKeys]), so a vehicle
+ * waiting to enter against it waits for it. SINGLE_VEHICLE_ONLY blocks are expanded to their members by the caller.
  */
 internal class RouteSafety(
     private val exits: ExitCorridors,
@@ -22,7 +24,10 @@ internal class RouteSafety(
     private val holders: (String) -> Collection<String>,
 ) {
     /** One claimed step; [stop] is the way out of where it ends if the vehicle stops there for an operation. */
-    private class Step(val keys: Set<String>, val twoWay: Boolean, val stop: Exit?)
+    private class Step(val keys: Set<String>, val twoWay: Boolean, val stop: Exit?) {
+        /** The step's resources and blocks, without corridor need keys: what holding the step means. */
+        val physical: Set<String> = physicalOf(keys)
+    }
 
     private class LookAhead(val required: Set<String>, val options: List<Set<String>>)
 
@@ -69,7 +74,8 @@ internal class RouteSafety(
     /** [client] was granted [keys]: the first claimed step with exactly these keys is no longer needed. */
     fun granted(client: String, keys: Set<String>) {
         val route = routes[client] ?: return
-        val index = route.indexOfFirst { it.keys == keys }
+        val physical = physicalOf(keys)
+        val index = route.indexOfFirst { it.physical == physical }
         if (index >= 0) route.removeAt(index)
     }
 
@@ -87,7 +93,7 @@ internal class RouteSafety(
     }
 
     private fun isSafe(client: String, keys: Set<String>, behind: Set<String>): Boolean {
-        val held = keys + behind
+        val held = heldAfter(keys, behind)
         return !Walk(client, held).isBlocked(lookAhead(client, skipping = keys, holding = held), client)
     }
 
@@ -96,7 +102,7 @@ internal class RouteSafety(
      * count only when every one of them is held, as in the check itself: one free way on is a way out.
      */
     fun blockersAfter(client: String, keys: Set<String>, behind: Set<String>): Map<String, Set<String>> {
-        val ahead = lookAhead(client, skipping = keys, holding = keys + behind)
+        val ahead = lookAhead(client, skipping = keys, holding = heldAfter(keys, behind))
         val blockers = HashMap<String, MutableSet<String>>()
         fun note(key: String) = holders(key).filter { it != client }.forEach { blockers.getOrPut(it, ::HashSet) += key }
         ahead.required.forEach(::note)
@@ -204,20 +210,37 @@ internal class RouteSafety(
         val exit = wayOut[client] ?: Exit.NONE
         val route = routes[client] ?: return LookAhead(exit.required, exit.options)
         val ahead = HashSet<String>()
+        val skippingPhysical = skipping?.let(::physicalOf)
         var skipped = skipping == null
         for (step in route) {
-            if (!skipped && step.keys == skipping) {
+            if (!skipped && step.physical == skippingPhysical) {
                 skipped = true
                 continue
             }
             ahead += step.keys
-            val holdsAll = holding.containsAll(step.keys)
+            val holdsAll = holding.containsAll(step.physical)
             // An operation where the client stands: what it waits for next is the step after it, not any way out.
-            if (!holdsAll && step.keys.all { it in holding || exits.isLocation(it) }) continue
+            if (!holdsAll && step.physical.all { it in holding || exits.isLocation(it) }) continue
             if (!step.twoWay && !holdsAll) return LookAhead(ahead, emptyList())
             step.stop?.let { return LookAhead(ahead + it.required, it.options) }
         }
         ahead += exit.required
         return LookAhead(ahead, exit.options)
     }
+}
+
+private fun physicalOf(keys: Set<String>): Set<String> =
+    if (keys.none(Corridors::isDirectionKey)) keys else keys.filterNotTo(HashSet(), Corridors::isDirectionKey)
+
+// What a grantee holds once it has driven up to a grant of [keys]: the step's resources, what its length covers
+// behind ([behind], whose corridor keys the step's own stand for) and, per corridor it heads along, the ways in for
+// vehicles heading the other way.
+private fun heldAfter(keys: Set<String>, behind: Set<String>): Set<String> {
+    if (keys.none(Corridors::isDirectionKey) && behind.none(Corridors::isDirectionKey)) return keys + behind
+    val held = HashSet(physicalOf(keys))
+    held += physicalOf(behind)
+    for (key in keys.filter(Corridors::isDirectionKey)) {
+        held += Corridors.heldKeys(Corridors.blockOfKey(key), Corridors.directionOfKey(key))
+    }
+    return held
 }

@@ -1,0 +1,109 @@
+package org.ktcs.kernel.scheduling
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.collections.shouldContainExactly
+import io.kotest.matchers.collections.shouldContainExactlyInAnyOrder
+import io.kotest.matchers.shouldBe
+import org.ktcs.kernel.simulation.TrafficGrid
+import org.ktcs.kernel.simulation.WarehousePlant
+
+// The two-way corridor W = A = B = C = E with a station stub S beside B; W and E are junctions with one-way lanes
+// (X -> W -> Y, Q -> E -> Z), so the corridor's inner points are A, B and C.
+private val corridor = plant(
+    "X-W", "W-Y", "W-A", "A-W", "A-B", "B-A", "B-C", "C-B", "C-E", "E-C", "E-Z", "Q-E", "B-S", "S-B",
+)
+
+/** The implicit same-direction records of two-way corridors ([Corridors]), as the scheduler applies them. */
+class CorridorsTest : FunSpec({
+    test("a corridor is a chain of two-way points between junctions, without its stubs and ends") {
+        val found = Corridors(corridor).blocks
+
+        found.map { it.members }.single() shouldContainExactlyInAnyOrder
+            listOf("A", "B", "C", "W-A", "A-W", "A-B", "B-A", "B-C", "C-B", "C-E", "E-C")
+    }
+
+    test("a warehouse's aisles are corridors; a one-way grid has none") {
+        val warehouse = WarehousePlant(aisles = 3, depth = 6, vehicles = 2).build()
+
+        val corridors = Corridors(warehouse)
+        // Aisle 01 between its junctions S-002 and N-002, and one chain round each outer aisle and its corners.
+        corridors.blocks.size shouldBe 3
+        val aisle = corridors.blockOf("A-01-02")!!.members.filter { it.matches(Regex("A-01-\\d\\d")) }
+        aisle shouldContainExactlyInAnyOrder listOf("A-01-01", "A-01-02", "A-01-03", "A-01-04")
+        corridors.blockOf("Stub-01-01") shouldBe null
+        corridors.blockOf("S-002") shouldBe null
+        Corridors(TrafficGrid(4, 4, 3).build()).isEmpty shouldBe true
+    }
+
+    test("a vehicle coming in at the other end waits until the corridor is empty") {
+        val f = SchedulerFixture(corridor)
+        val (v1, v2) = f.client("v1") to f.client("v2")
+        f.scheduler.allocateNow(v1, setOf("W"))
+        f.scheduler.allocateNow(v2, setOf("E"))
+        f.scheduler.claim(v1, listOf(setOf("W-A", "A"), setOf("A-B", "B")))
+        f.scheduler.claim(v2, listOf(setOf("E-C", "C"), setOf("C-B", "B")))
+        f.allocate(v1, "W-A", "A")
+
+        f.allocate(v2, "E-C", "C")
+        v2.granted.shouldBeEmpty()
+
+        f.free(v1, "W-A", "A")
+        v2.granted shouldContainExactly listOf(setOf("E-C", "C"))
+    }
+
+    test("a vehicle coming in at the same end follows the one inside") {
+        val f = SchedulerFixture(corridor)
+        val (v1, v2) = f.client("v1") to f.client("v2")
+        f.scheduler.allocateNow(v1, setOf("W"))
+        f.scheduler.claim(v1, listOf(setOf("W-A", "A"), setOf("A-B", "B")))
+        f.allocate(v1, "W-A", "A")
+        f.allocate(v1, "A-B", "B")
+        f.free(v1, "W", "W-A", "A")
+
+        f.scheduler.allocateNow(v2, setOf("W"))
+        f.scheduler.claim(v2, listOf(setOf("W-A", "A"), setOf("A-B", "B")))
+        f.allocate(v2, "W-A", "A")
+
+        v2.granted shouldContainExactly listOf(setOf("W-A", "A"))
+    }
+
+    test("out of a stub a vehicle comes in like any other, heading where its route goes next") {
+        val f = SchedulerFixture(corridor)
+        val (v1, against, along) = Triple(f.client("v1"), f.client("against"), f.client("along"))
+        // v1 stands at A, having come in at W; the point B beside the stub is free.
+        f.scheduler.allocateNow(v1, setOf("W"))
+        f.scheduler.claim(v1, listOf(setOf("W-A", "A")))
+        f.allocate(v1, "W-A", "A")
+        f.free(v1, "W")
+        f.scheduler.allocateNow(against, setOf("S"))
+        f.scheduler.claim(against, listOf(setOf("S-B", "B"), setOf("B-A", "A")))
+
+        f.allocate(against, "S-B", "B")
+        against.granted.shouldBeEmpty()
+
+        f.scheduler.freeAll(against)
+        f.scheduler.allocateNow(along, setOf("S"))
+        f.scheduler.claim(along, listOf(setOf("S-B", "B"), setOf("B-C", "C")))
+        f.allocate(along, "S-B", "B")
+        along.granted shouldContainExactly listOf(setOf("S-B", "B"))
+    }
+
+    test("a vehicle bound into the corridor against its users does not take the junction they leave by") {
+        val f = SchedulerFixture(corridor)
+        val (inside, outside) = f.client("inside") to f.client("outside")
+        // inside came in at E and drives towards W; outside wants in at W.
+        f.scheduler.allocateNow(inside, setOf("E"))
+        f.scheduler.claim(inside, listOf(setOf("E-C", "C"), setOf("C-B", "B"), setOf("B-A", "A"), setOf("A-W", "W")))
+        f.allocate(inside, "E-C", "C")
+        f.free(inside, "E")
+        f.scheduler.allocateNow(outside, setOf("X"))
+        f.scheduler.claim(outside, listOf(setOf("X-W", "W"), setOf("W-A", "A")))
+
+        f.allocate(outside, "X-W", "W")
+        outside.granted.shouldBeEmpty()
+
+        f.free(inside, "E-C", "C")
+        outside.granted shouldContainExactly listOf(setOf("X-W", "W"))
+    }
+})
