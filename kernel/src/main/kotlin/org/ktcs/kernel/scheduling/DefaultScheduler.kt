@@ -400,7 +400,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
          * with the corridors' direction records a short one no longer lets vehicles fill an aisle from both ends
          * (guide, section 12). The grids never reach it.
          */
-        const val PARK_TEST_PATIENCE_MILLIS = 2_000L
+        const val PARK_TEST_PATIENCE_MILLIS = 3_000L
         private val log = LoggerFactory.getLogger(DefaultScheduler::class.java)
     }
 }

@@ -21,7 +21,7 @@ internal class Occupancy(private val blocks: BlockIndex, private val corridors: 
     fun holdingKeys(client: String): Set<String> {
         val mine = held[client] ?: return emptySet()
         val used = mine.flatMap { blocks.sameDirectionBlocksOf(it) }
-        val along = mine.mapNotNullTo(HashSet()) { corridors.blockOf(it)?.name }
+        val along = if (corridors.isEmpty) emptySet() else mine.mapNotNullTo(HashSet()) { corridors.blockOf(it)?.name }
         if (used.isEmpty() && along.isEmpty()) return mine
         return mine + used.map { it.name } +
             along.flatMap { Corridors.heldKeys(it, corridorDirections.direction(it)) }

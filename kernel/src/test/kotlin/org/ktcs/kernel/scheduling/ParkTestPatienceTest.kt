@@ -7,7 +7,7 @@ import io.kotest.matchers.shouldBe
 import org.ktcs.api.model.PointType
 
 /**
- * The park test is a preference, not a wall: a grant it holds back is left to the local rule alone after two seconds
+ * The park test is a preference, not a wall: a grant it holds back is left to the local rule alone after three seconds
  * of vehicle time (`DefaultScheduler.PARK_TEST_PATIENCE_MILLIS`), not before.
  */
 class ParkTestPatienceTest : FunSpec({
@@ -39,7 +39,7 @@ class ParkTestPatienceTest : FunSpec({
         vd.granted.shouldBeEmpty()
         f.scheduler.grantWaitOf("vd").first shouldBe GrantWait.PARK_TEST
 
-        f.clock.advance(1_999)
+        f.clock.advance(2_999)
         f.scheduler.retryOverdue()
         f.clock.drain()
 
@@ -47,10 +47,10 @@ class ParkTestPatienceTest : FunSpec({
         f.scheduler.grantsAfterPatience shouldBe 0
     }
 
-    test("after two seconds of vehicle time the local rule alone decides the grant") {
+    test("after three seconds of vehicle time the local rule alone decides the grant") {
         val (f, vd) = refusedGrant()
 
-        f.clock.advance(2_000)
+        f.clock.advance(3_000)
         f.scheduler.retryOverdue()
         f.clock.drain()
 
