@@ -39,10 +39,8 @@ class CorridorsTest : FunSpec({
     test("a vehicle coming in at the other end waits until the corridor is empty") {
         val f = SchedulerFixture(corridor)
         val (v1, v2) = f.client("v1") to f.client("v2")
-        f.scheduler.allocateNow(v1, setOf("W"))
-        f.scheduler.allocateNow(v2, setOf("E"))
-        f.scheduler.claim(v1, listOf(setOf("W-A", "A"), setOf("A-B", "B")))
-        f.scheduler.claim(v2, listOf(setOf("E-C", "C"), setOf("C-B", "B")))
+        f.place(v1, "W", "W-A", "A-B")
+        f.place(v2, "E", "E-C", "C-B")
         f.allocate(v1, "W-A", "A")
 
         f.allocate(v2, "E-C", "C")
@@ -55,14 +53,12 @@ class CorridorsTest : FunSpec({
     test("a vehicle coming in at the same end follows the one inside") {
         val f = SchedulerFixture(corridor)
         val (v1, v2) = f.client("v1") to f.client("v2")
-        f.scheduler.allocateNow(v1, setOf("W"))
-        f.scheduler.claim(v1, listOf(setOf("W-A", "A"), setOf("A-B", "B")))
+        f.place(v1, "W", "W-A", "A-B")
         f.allocate(v1, "W-A", "A")
         f.allocate(v1, "A-B", "B")
         f.free(v1, "W", "W-A", "A")
 
-        f.scheduler.allocateNow(v2, setOf("W"))
-        f.scheduler.claim(v2, listOf(setOf("W-A", "A"), setOf("A-B", "B")))
+        f.place(v2, "W", "W-A", "A-B")
         f.allocate(v2, "W-A", "A")
 
         v2.granted shouldContainExactly listOf(setOf("W-A", "A"))
@@ -72,19 +68,16 @@ class CorridorsTest : FunSpec({
         val f = SchedulerFixture(corridor)
         val (v1, against, along) = Triple(f.client("v1"), f.client("against"), f.client("along"))
         // v1 stands at A, having come in at W; the point B beside the stub is free.
-        f.scheduler.allocateNow(v1, setOf("W"))
-        f.scheduler.claim(v1, listOf(setOf("W-A", "A")))
+        f.place(v1, "W", "W-A")
         f.allocate(v1, "W-A", "A")
         f.free(v1, "W")
-        f.scheduler.allocateNow(against, setOf("S"))
-        f.scheduler.claim(against, listOf(setOf("S-B", "B"), setOf("B-A", "A")))
+        f.place(against, "S", "S-B", "B-A")
 
         f.allocate(against, "S-B", "B")
         against.granted.shouldBeEmpty()
 
         f.scheduler.freeAll(against)
-        f.scheduler.allocateNow(along, setOf("S"))
-        f.scheduler.claim(along, listOf(setOf("S-B", "B"), setOf("B-C", "C")))
+        f.place(along, "S", "S-B", "B-C")
         f.allocate(along, "S-B", "B")
         along.granted shouldContainExactly listOf(setOf("S-B", "B"))
     }
@@ -93,12 +86,10 @@ class CorridorsTest : FunSpec({
         val f = SchedulerFixture(corridor)
         val (inside, outside) = f.client("inside") to f.client("outside")
         // inside came in at E and drives towards W; outside wants in at W.
-        f.scheduler.allocateNow(inside, setOf("E"))
-        f.scheduler.claim(inside, listOf(setOf("E-C", "C"), setOf("C-B", "B"), setOf("B-A", "A"), setOf("A-W", "W")))
+        f.place(inside, "E", "E-C", "C-B", "B-A", "A-W")
         f.allocate(inside, "E-C", "C")
         f.free(inside, "E")
-        f.scheduler.allocateNow(outside, setOf("X"))
-        f.scheduler.claim(outside, listOf(setOf("X-W", "W"), setOf("W-A", "A")))
+        f.place(outside, "X", "X-W", "W-A")
 
         f.allocate(outside, "X-W", "W")
         outside.granted.shouldBeEmpty()
@@ -107,3 +98,9 @@ class CorridorsTest : FunSpec({
         outside.granted shouldContainExactly listOf(setOf("X-W", "W"))
     }
 })
+
+// Places [client] at [point] and has it claim a route of the paths named `SOURCE-DESTINATION` in [paths].
+private fun SchedulerFixture.place(client: RecordingClient, point: String, vararg paths: String) {
+    scheduler.allocateNow(client, setOf(point))
+    scheduler.claim(client, paths.map { setOf(it, it.substringAfter("-")) })
+}
