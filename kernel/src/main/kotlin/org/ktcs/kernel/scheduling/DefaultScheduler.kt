@@ -74,8 +74,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         safety.claim(
             client.name,
             routeKeys(client.name, resources),
-            stopsOf(resources),
-            resources.lastOrNull()?.let(::pointOf),
+            safety.stopsOf(resources),
+            resources.lastOrNull()?.let(safety::pointOf),
         )
         retryDeferred()
     }
@@ -235,8 +235,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         safety.wouldWaitForItself(
             client.name,
             routeKeys(client.name, resources),
-            stopsOf(resources),
-            resources.lastOrNull()?.let(::pointOf),
+            safety.stopsOf(resources),
+            resources.lastOrNull()?.let(safety::pointOf),
             resources.firstOrNull()?.let { keysOf(client.heldAfter(it)) }.orEmpty(),
         )
 
@@ -251,7 +251,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     // The point a client stands on or was granted last and still holds, if known.
     private fun frontOf(client: String): String? {
         val last = lastGrants[client]?.takeIf { occupancy.holdingKeys(client).containsAll(it.physicalKeys) }
-        return last?.let { pointOf(it.resources) } ?: occupancy.holdingKeys(client).singleOrNull(safety::isPoint)
+        return last?.let { safety.pointOf(it.resources) } ?: occupancy.holdingKeys(client).singleOrNull(safety::isPoint)
     }
 
     /** Those held back for longer than two watchdog periods; each retreat point is searched for when asked for. */
@@ -287,26 +287,6 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         val expanded = blocks.expand(resources)
         return expanded + blocks.entries(expanded).map { it.block.name }
     }
-
-    // Per step, the point where the vehicle stops at its end (null: it drives on): for an operation, or to turn back
-    // the way it came (the dead-end park bay of a retreat). Standing there it waits only for the way out, so a retreat
-    // is judged by its way into the bay; the way back out is judged when the vehicle asks for it, from the bay.
-    private fun stopsOf(resources: List<Set<String>>): List<String?> =
-        resources.mapIndexed { i, step ->
-            if (step.any(safety::isLocation) || turnsBack(resources, i)) pointOf(step) else null
-        }
-
-    private fun turnsBack(resources: List<Set<String>>, i: Int): Boolean {
-        val next = resources.getOrNull(i + 1) ?: return false
-        val path = pathOf(resources[i])
-        return (path != null && path == pathOf(next)) || (i > 0 && pointOf(next) == pointOf(resources[i - 1]))
-    }
-
-    private fun pathOf(resources: Set<String>): String? =
-        resources.firstOrNull { !safety.isPoint(it) && !safety.isLocation(it) }
-
-    // A step's resources are its path, the point it ends at and maybe a location: the point is where it ends.
-    private fun pointOf(resources: Set<String>): String? = resources.lastOrNull(safety::isPoint)
 
     // Grants held back for safety may become safe after any change elsewhere; each retry costs one reachability walk.
     private fun retryDeferred() {
@@ -373,7 +353,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
             return true
         }
         if (parkRefusedAt[request.seq] == releases) return false
-        if (parks.mayGrant(request.client.name, pointOf(request.resources), request.keys + behind)) return true
+        if (parks.mayGrant(request.client.name, safety.pointOf(request.resources), request.keys + behind)) return true
         parkRefusedAt[request.seq] = releases
         return false
     }

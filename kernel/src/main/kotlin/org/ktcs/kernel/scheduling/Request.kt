@@ -16,13 +16,17 @@ internal class Request(
     val corridors: List<BlockEntry> = emptyList(),
     val gates: List<BlockEntry> = emptyList(),
 ) {
-    /**
-     * What the request may wait for: its resources, the SAME_DIRECTION_ONLY blocks it touches and, per corridor it
-     * comes into, that nobody uses it the other way.
-     */
-    val keys: Set<String> =
-        expanded + entries.map { it.block.name } +
-            corridors.filter { it.entering }.map { Corridors.needKey(it.block.name, it.direction) }
+    /** Its resources and the SAME_DIRECTION_ONLY blocks it touches: what holding the granted request means. */
+    val physicalKeys: Set<String> = expanded + entries.map { it.block.name }
+
+    /** What the request may wait for: its [physicalKeys] and, per corridor it comes into, nobody using it the other way. */
+    val keys: Set<String> = corridors.filter { it.entering }.let { entering ->
+        if (entering.isEmpty()) {
+            physicalKeys
+        } else {
+            physicalKeys + entering.map { Corridors.needKey(it.block.name, it.direction) }
+        }
+    }
 
     /**
      * The keys whose change may let the request through, for [PendingRequests]: its [keys] plus, per corridor it
@@ -38,8 +42,4 @@ internal class Request(
         } else {
             keys + (corridors + gates).map { Corridors.needKey(it.block.name, it.direction) }
         }
-
-    /** [keys] without corridor need keys: what holding the granted request means (the client never holds those). */
-    val physicalKeys: Set<String>
-        get() = if (corridors.isEmpty()) keys else keys.filterNotTo(HashSet(), Corridors::isDirectionKey)
 }
