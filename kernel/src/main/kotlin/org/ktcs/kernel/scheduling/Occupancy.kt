@@ -1,5 +1,7 @@
 package org.ktcs.kernel.scheduling
 
+import org.ktcs.api.model.Block
+
 /**
  * Who holds which resource. A client holds what it requested plus the rest of every SINGLE_VEHICLE_ONLY block it
  * requested a member of, and keeps such a block as long as it holds a requested member of it.
@@ -14,6 +16,10 @@ internal class Occupancy(private val blocks: BlockIndex, private val corridors: 
     val directions = DirectionRecords()
     val corridorDirections = DirectionRecords()
 
+    // Per client, per corridor it was let in at the end of (a gate), what it holds there: while it holds any of it, it
+    // counts as a user of the corridor heading in, so nobody drives into the corridor towards it meanwhile.
+    private val gates = HashMap<String, MutableMap<String, Gate>>()
+
     /**
      * What [client] holds as deadlock avoidance counts it: its resources, the SAME_DIRECTION_ONLY blocks it uses and,
      * per corridor it drives along, the way in for vehicles heading the other way ([Corridors.heldKeys]).
@@ -21,7 +27,11 @@ internal class Occupancy(private val blocks: BlockIndex, private val corridors: 
     fun holdingKeys(client: String): Set<String> {
         val mine = held[client] ?: return emptySet()
         val used = mine.flatMap { blocks.sameDirectionBlocksOf(it) }
-        val along = if (corridors.isEmpty) emptySet() else mine.mapNotNullTo(HashSet()) { corridors.blockOf(it)?.name }
+        val along = if (corridors.isEmpty) {
+            emptySet()
+        } else {
+            mine.mapNotNullTo(HashSet()) { corridors.blockOf(it)?.name } + gates[client]?.keys.orEmpty()
+        }
         if (used.isEmpty() && along.isEmpty()) return mine
         return mine + used.map { it.name } +
             along.flatMap { Corridors.heldKeys(it, corridorDirections.direction(it)) }
@@ -65,7 +75,9 @@ internal class Occupancy(private val blocks: BlockIndex, private val corridors: 
         for (entry in (request.corridors + request.gates).filterNot { corridorDirections.admitsHeading(it, client) }) {
             val others = corridorDirections.users(entry.block.name) - client
             for (other in others) {
-                blockers.getOrPut(other, ::HashSet) += entry.block.members.filter { other in holders[it].orEmpty() }
+                val gate = gates[other]?.get(entry.block.name)?.at.orEmpty()
+                blockers.getOrPut(other, ::HashSet) +=
+                    (entry.block.members + gate).filter { other in holders[it].orEmpty() }
             }
         }
         return blockers
@@ -80,6 +92,12 @@ internal class Occupancy(private val blocks: BlockIndex, private val corridors: 
         val redirected = request.entries.filter { directions.enter(it, client) }.mapTo(HashSet()) { it.block.name }
         request.corridors.filter { corridorDirections.enter(it, client) }
             .forEach { redirected += Corridors.heldKeys(it.block.name, null) }
+        for (gate in request.gates) {
+            if (gates[client]?.containsKey(gate.block.name) == true) continue
+            if (corridorDirections.enter(gate, client)) redirected += Corridors.heldKeys(gate.block.name, null)
+            corridorDirections.memberTaken(gate.block, client)
+            gates.getOrPut(client, ::HashMap)[gate.block.name] = Gate(gate.block, request.expanded)
+        }
         val mine = requested.getOrPut(client, ::HashSet)
         val added = request.resources.filterTo(HashSet()) { mine.add(it) }
         request.expanded.forEach { hold(client, it) }
@@ -127,9 +145,24 @@ internal class Occupancy(private val blocks: BlockIndex, private val corridors: 
         val left = blocks.sameDirectionBlocksOf(resource).filter { directions.memberReleased(it, client) }
         val leftCorridor = corridors.blockOf(resource)?.takeIf { corridorDirections.memberReleased(it, client) }
         val corridorKeys = leftCorridor?.let { Corridors.heldKeys(it.name, null) }.orEmpty()
-        return listOf(resource) + left.map { it.name } + corridorKeys
+        return listOf(resource) + left.map { it.name } + corridorKeys + leaveGates(client, resource)
+    }
+
+    // Drops the gates [client] no longer holds anything of once it gave back [resource]; returns the keys they free.
+    private fun leaveGates(client: String, resource: String): List<String> {
+        val mine = gates[client] ?: return emptyList()
+        val mineHeld = held[client].orEmpty()
+        val left = mine.values.filter { resource in it.at && it.at.none(mineHeld::contains) }
+        if (left.isEmpty()) return emptyList()
+        left.forEach { mine.remove(it.block.name) }
+        if (mine.isEmpty()) gates.remove(client)
+        return left.filter { corridorDirections.memberReleased(it.block, client) }
+            .flatMap { Corridors.heldKeys(it.block.name, null) }
     }
 }
+
+/** A corridor a client was let in at the end of ([Request.gates]), and what it holds there. */
+private class Gate(val block: Block, val at: Set<String>)
 
 /** What a grant changed: the resources newly requested, and the blocks whose direction changed. */
 internal class Taken(val added: Set<String>, val redirected: Set<String>)

@@ -19,12 +19,15 @@ internal class Request(
     /** Its resources and the SAME_DIRECTION_ONLY blocks it touches: what holding the granted request means. */
     val physicalKeys: Set<String> = expanded + entries.map { it.block.name }
 
-    /** What the request may wait for: its [physicalKeys] and, per corridor it comes into, nobody using it the other way. */
-    val keys: Set<String> = corridors.filter { it.entering }.let { entering ->
-        if (entering.isEmpty()) {
+    /**
+     * What the request may wait for: its [physicalKeys] and, per corridor it comes into or is let in at the end of
+     * ([gates]), nobody using it the other way. Granted, it holds the way in for its heading ([RouteSafety]).
+     */
+    val keys: Set<String> = (corridors.filter { it.entering } + gates).let { heading ->
+        if (heading.isEmpty()) {
             physicalKeys
         } else {
-            physicalKeys + entering.map { Corridors.needKey(it.block.name, it.direction) }
+            physicalKeys + heading.map { Corridors.needKey(it.block.name, it.direction) }
         }
     }
 

@@ -201,7 +201,9 @@ internal class RouteSafety(
     // SINGLE_VEHICLE_ONLY block it is in: its real next need is the first step out of it), and the way out at the end
     // of the claim. A stop for an operation on the way ends the look-ahead with the way out of that stop: a vehicle
     // standing there waits for nothing else. A grantee ([skipping] its grant) is looked at as it will be: holding
-    // [holding].
+    // [holding]; a grant into a dead-end bay it leaves over a two-way path (a station stub or park bay beside an aisle)
+    // is judged by the way out of the bay, as any other stop: the way on after it is judged when it asks to come out,
+    // once the vehicles it let pass have gone. Stops left over one-way lanes keep the way on (the grids' stations).
     private fun lookAhead(
         client: String,
         skipping: Set<String>? = null,
@@ -212,9 +214,13 @@ internal class RouteSafety(
         val ahead = HashSet<String>()
         val skippingPhysical = skipping?.let(::physicalOf)
         var skipped = skipping == null
-        for (step in route) {
+        for ((i, step) in route.withIndex()) {
             if (!skipped && step.physical == skippingPhysical) {
                 skipped = true
+                val stop = step.stop
+                if (stop != null && route.getOrNull(i + 1)?.twoWay == true) {
+                    return LookAhead(ahead + stop.required, stop.options)
+                }
                 continue
             }
             ahead += step.keys

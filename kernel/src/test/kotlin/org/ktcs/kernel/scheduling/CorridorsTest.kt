@@ -10,9 +10,10 @@ import org.ktcs.kernel.simulation.WarehousePlant
 
 // The two-way corridor W = A = B = C = E with a station stub S beside B; W and E are junctions with one-way lanes
 // (X -> W -> Y, Q -> E -> Z), so the corridor's inner points are A, B and C.
-private val corridor = plant(
+private val corridorPaths = arrayOf(
     "X-W", "W-Y", "W-A", "A-W", "A-B", "B-A", "B-C", "C-B", "C-E", "E-C", "E-Z", "Q-E", "B-S", "S-B",
 )
+private val corridor = plant(*corridorPaths)
 
 /** The implicit same-direction records of two-way corridors ([Corridors]), as the scheduler applies them. */
 class CorridorsTest : FunSpec({
@@ -96,6 +97,47 @@ class CorridorsTest : FunSpec({
 
         f.free(inside, "E-C", "C")
         outside.granted shouldContainExactly listOf(setOf("X-W", "W"))
+    }
+
+    test("a vehicle granted the junction it comes in by keeps the corridor's direction until it leaves that junction") {
+        // A second bay T beside A: a vehicle stopping there waits only for the way out of it, so deadlock avoidance
+        // alone lets it come out of S towards W while another stands at W bound in towards E.
+        val f = SchedulerFixture(plant(*corridorPaths, "A-T", "T-A"))
+        val (outside, bay) = f.client("outside") to f.client("bay")
+        f.place(outside, "X", "X-W", "W-A", "A-B")
+        f.place(bay, "S", "S-B", "B-A", "A-T", "T-A", "A-W")
+        f.allocate(outside, "X-W", "W")
+        outside.granted shouldContainExactly listOf(setOf("X-W", "W"))
+
+        f.allocate(bay, "S-B", "B")
+        bay.granted.shouldBeEmpty()
+        f.scheduler.waitsFor()["bay"].orEmpty().keys shouldContainExactly setOf("outside")
+
+        // outside changes its mind at the junction and drives on to Y: once it left W the corridor is free again.
+        f.scheduler.claim(outside, listOf(setOf("W-Y", "Y")))
+        f.allocate(outside, "W-Y", "Y")
+        bay.granted.shouldBeEmpty()
+        f.free(outside, "X-W", "W")
+        bay.granted shouldContainExactly listOf(setOf("S-B", "B"))
+    }
+
+    test("a vehicle turning into a bay beside a corridor is judged by the way out of the bay, not by its way on") {
+        val f = SchedulerFixture(corridor)
+        // bay drives from A to B and covers B until it is all the way into S; it turns back there and heads for W,
+        // against the follower behind it, which heads for E and waits for B.
+        val bay = object : RecordingClient("bay") {
+            override fun heldAfter(resources: Set<String>) = if ("S" in resources) setOf("B") else emptySet()
+        }
+        val follower = f.client("follower")
+        f.place(bay, "A", "A-B", "B-S", "S-B", "B-A", "A-W", "W-Y")
+        f.allocate(bay, "A-B", "B")
+        f.free(bay, "A")
+        f.place(follower, "A", "A-B", "B-C", "C-E", "E-Z")
+
+        f.allocate(bay, "B-S", "S")
+
+        // In the bay it frees B, the follower drives on, and the bay comes out once the corridor lets it head for W.
+        bay.granted shouldContainExactly listOf(setOf("A-B", "B"), setOf("B-S", "S"))
     }
 })
 
