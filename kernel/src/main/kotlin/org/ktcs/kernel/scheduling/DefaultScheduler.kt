@@ -83,6 +83,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     override fun unclaim(client: SchedulerClient) {
         claims.remove(client.name)
         safety.unclaim(client.name)
+        // Without a route it is bound into no corridor: standing at a corridor's end, it keeps nobody out any more.
+        wake(occupancy.leaveGates(client.name))
         retryDeferred()
     }
 

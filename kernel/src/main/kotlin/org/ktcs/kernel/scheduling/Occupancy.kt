@@ -148,6 +148,13 @@ internal class Occupancy(private val blocks: BlockIndex, private val corridors: 
         return listOf(resource) + left.map { it.name } + corridorKeys + leaveGates(client, resource)
     }
 
+    /** Drops every gate [client] holds (it is bound into no corridor any more); returns the keys that frees. */
+    fun leaveGates(client: String): Set<String> {
+        val mine = gates.remove(client) ?: return emptySet()
+        return mine.values.filter { corridorDirections.memberReleased(it.block, client) }
+            .flatMapTo(HashSet()) { Corridors.heldKeys(it.block.name, null) }
+    }
+
     // Drops the gates [client] no longer holds anything of once it gave back [resource]; returns the keys they free.
     private fun leaveGates(client: String, resource: String): List<String> {
         val mine = gates[client] ?: return emptyList()

@@ -100,14 +100,7 @@ class CorridorsTest : FunSpec({
     }
 
     test("a vehicle granted the junction it comes in by keeps the corridor's direction until it leaves that junction") {
-        // A second bay T beside A: a vehicle stopping there waits only for the way out of it, so deadlock avoidance
-        // alone lets it come out of S towards W while another stands at W bound in towards E.
-        val f = SchedulerFixture(plant(*corridorPaths, "A-T", "T-A"))
-        val (outside, bay) = f.client("outside") to f.client("bay")
-        f.place(outside, "X", "X-W", "W-A", "A-B")
-        f.place(bay, "S", "S-B", "B-A", "A-T", "T-A", "A-W")
-        f.allocate(outside, "X-W", "W")
-        outside.granted shouldContainExactly listOf(setOf("X-W", "W"))
+        val (f, outside, bay) = bayBehindAGate()
 
         f.allocate(bay, "S-B", "B")
         bay.granted.shouldBeEmpty()
@@ -118,6 +111,17 @@ class CorridorsTest : FunSpec({
         f.allocate(outside, "W-Y", "Y")
         bay.granted.shouldBeEmpty()
         f.free(outside, "X-W", "W")
+        bay.granted shouldContainExactly listOf(setOf("S-B", "B"))
+    }
+
+    test("a vehicle left without a route at a corridor's end keeps nobody out of the corridor") {
+        val (f, outside, bay) = bayBehindAGate()
+        f.allocate(bay, "S-B", "B")
+
+        // Its order ended (withdrawn) while it stood at W: it stays on W but is bound into the corridor no more.
+        f.scheduler.unclaim(outside)
+        f.clock.drain()
+
         bay.granted shouldContainExactly listOf(setOf("S-B", "B"))
     }
 
@@ -140,6 +144,18 @@ class CorridorsTest : FunSpec({
         bay.granted shouldContainExactly listOf(setOf("A-B", "B"), setOf("B-S", "S"))
     }
 })
+
+// The corridor with a second bay T beside A: a vehicle stopping there waits only for the way out of it, so deadlock
+// avoidance alone would let "bay" come out of S towards W while "outside", granted W, is bound in towards E.
+private fun bayBehindAGate(): Triple<SchedulerFixture, RecordingClient, RecordingClient> {
+    val f = SchedulerFixture(plant(*corridorPaths, "A-T", "T-A"))
+    val (outside, bay) = f.client("outside") to f.client("bay")
+    f.place(outside, "X", "X-W", "W-A", "A-B")
+    f.place(bay, "S", "S-B", "B-A", "A-T", "T-A", "A-W")
+    f.allocate(outside, "X-W", "W")
+    outside.granted shouldContainExactly listOf(setOf("X-W", "W"))
+    return Triple(f, outside, bay)
+}
 
 // Places [client] at [point] and has it claim a route of the paths named `SOURCE-DESTINATION` in [paths].
 private fun SchedulerFixture.place(client: RecordingClient, point: String, vararg paths: String) {
