@@ -151,8 +151,7 @@ internal class Occupancy(private val blocks: BlockIndex, private val corridors: 
     /** Drops every gate [client] holds (it is bound into no corridor any more); returns the keys that frees. */
     fun leaveGates(client: String): Set<String> {
         val mine = gates.remove(client) ?: return emptySet()
-        return mine.values.filter { corridorDirections.memberReleased(it.block, client) }
-            .flatMapTo(HashSet()) { Corridors.heldKeys(it.block.name, null) }
+        return leave(client, mine.values).toSet()
     }
 
     // Drops the gates [client] no longer holds anything of once it gave back [resource]; returns the keys they free.
@@ -163,8 +162,13 @@ internal class Occupancy(private val blocks: BlockIndex, private val corridors: 
         if (left.isEmpty()) return emptyList()
         left.forEach { mine.remove(it.block.name) }
         if (mine.isEmpty()) gates.remove(client)
-        return left.filter { corridorDirections.memberReleased(it.block, client) }
-            .flatMap { Corridors.heldKeys(it.block.name, null) }
+        return leave(client, left)
+    }
+
+    // [client] no longer counts as a user through [left]; returns the wake-up keys of the corridors it has now left.
+    private fun leave(client: String, left: Collection<Gate>): List<String> {
+        val emptied = left.filter { corridorDirections.memberReleased(it.block, client) }
+        return emptied.flatMap { Corridors.heldKeys(it.block.name, null) }
     }
 }
 
