@@ -37,6 +37,13 @@ interface KernelContext : KernelClock, AutoCloseable {
      */
     suspend fun <T> callAtomically(block: suspend () -> T): T = call { completedWithoutSuspending(block) }
 
+    /**
+     * Runs [task] at once on the calling thread, as a kernel task, if the context is idle (nothing queued, nothing
+     * running) and returns `true`; else returns `false` and the caller hands the task in with [submit]. [task] must
+     * not throw. A caller who waits for its task anyway saves the hand-off to the kernel thread and back.
+     */
+    fun runHereIfIdle(task: () -> Unit): Boolean = false
+
     /** Whether the calling code runs in the kernel context. */
     fun isInKernelContext(): Boolean
 }

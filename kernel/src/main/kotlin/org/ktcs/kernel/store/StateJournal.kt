@@ -68,6 +68,8 @@ class StateJournal(
         }
     }
 
+    override val waits: Boolean get() = waitForCommit
+
     override fun mark(): Long {
         if (!waitForCommit) return 0
         var wake = false

@@ -90,7 +90,10 @@ class WebFaultsTest : FunSpec({
     test("WebSocket clients are closed with 1001 when kTCS stops, without an ERROR in the log") {
         val (application, base) = startKernel()
         val client = RecordingWebSocket()
-        http.newWebSocketBuilder().buildAsync(URI(base.replace("http:", "ws:") + "/ws"), client).get()
+        val socket = http.newWebSocketBuilder().buildAsync(URI(base.replace("http:", "ws:") + "/ws"), client).get()
+        // An answer says the server's session runs: the handshake's answer comes before the session is registered.
+        socket.sendText("""{"type":"subscribe"}""", true).get()
+        client.messages.poll(10, TimeUnit.SECONDS)!! shouldContain "subscribe needs topics"
         val sse = http.sendAsync(
             HttpRequest.newBuilder(URI("$base/sse?/events/vehicles=true")).build(),
             HttpResponse.BodyHandlers.ofLines(),
