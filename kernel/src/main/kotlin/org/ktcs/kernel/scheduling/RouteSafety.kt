@@ -149,10 +149,12 @@ internal class RouteSafety(
     fun needs(client: String): Set<String> = lookAhead(client).let { it.required + it.options.flatten() }
 
     /**
-     * One check: which vehicles would wait, directly or through others, for [grantee] holding [held]. The vehicles
-     * near enough to matter are those whose needs the grantee's needs lead to; among them, the ones that wait for the
-     * grantee are found as a least fixpoint (a vehicle waits if what it needs is held by the grantee or by vehicles
-     * already known to wait), so a loop of waits not through the grantee counts for nothing.
+     * One check: which vehicles could never move again while [grantee] holds [held] and stands. The vehicles near
+     * enough to matter are those whose needs the grantee's needs lead to. Among them the ones that can move are found
+     * as a least fixpoint (a vehicle can move once what it needs is free or held by vehicles that can move; for the
+     * ways on, once one of them is), and all others wait. Waiting is thus the greatest fixpoint, not the least: two
+     * vehicles that each need the other only because the grantee holds their one other way on (a vehicle standing
+     * between them on a two-way track, with a bay beside it) wait, though neither waits for the grantee directly.
      */
     private inner class Walk(private val grantee: String, private val held: Set<String>) {
         private val waiting = HashSet<String>()
@@ -184,12 +186,13 @@ internal class RouteSafety(
             }
             reach(start)
             while (queue.isNotEmpty()) reach(near.getValue(queue.removeFirst()))
+            waiting += near.keys
             val order = near.keys.reversed()
             do {
                 var changed = false
                 for (client in order) {
-                    if (client !in waiting && blocks(near.getValue(client), client)) {
-                        waiting += client
+                    if (client in waiting && !blocks(near.getValue(client), client)) {
+                        waiting -= client
                         changed = true
                     }
                 }

@@ -191,4 +191,34 @@ class DeadlockAvoidanceTest : FunSpec({
         DeadlockDetector.detect(f.scheduler.waitForGraph()).map { it.vehicles.toSet() } shouldContainExactly
             listOf(setOf("v1", "v2"))
     }
+
+    test("a grant that leaves two vehicles waiting only for each other is held back, though neither waits for it") {
+        // A two-way track P7 - P8 - P9 - P10 - P11 with junctions at P8 and P10 (a way round over X and Y) and a
+        // station bay K at P9 (the warehouse's cross aisle). v1 at P9 will operate in K and leave west over P8; v9 at
+        // P10 heads west into K; v13 at P7 heads east along the track.
+        val model = plant(
+            "P7-P8", "P8-P7", "P8-P9", "P9-P8", "P9-P10", "P10-P9", "P10-P11", "P11-P10", "P9-K", "K-P9",
+            "P8-X", "X-P8", "X-Y", "Y-X", "Y-P10", "P10-Y",
+        ).let { it.copy(locations = listOf(Location("L", "station", links = listOf(Link("K"))))) }
+        val f = SchedulerFixture(model)
+        val (v1, v9, v13) = listOf("v1" to "P9", "v9" to "P10", "v13" to "P7").map { (name, point) ->
+            f.client(name).also { f.scheduler.allocateNow(it, setOf(point)) }
+        }
+        f.scheduler.claim(
+            v1,
+            listOf(setOf("P9-K", "K", "L"), setOf("K-P9", "P9"), setOf("P9-P8", "P8"), setOf("P8-P7", "P7")),
+        )
+        f.scheduler.claim(v9, listOf(setOf("P10-P9", "P9"), setOf("P9-K", "K")))
+        f.scheduler.claim(v13, listOf(setOf("P7-P8", "P8"), setOf("P8-P9", "P9"), setOf("P9-P10", "P10")))
+
+        // In K, v1 may leave by P8 or by P10. With v13 on P8, v1 needs v9 to move and v9 needs v1 to: both wait, and
+        // v13 would wait for v1 at P8 for good.
+        f.allocate(v13, "P7-P8", "P8")
+
+        v13.granted.shouldBeEmpty()
+        f.scheduler.grantsHeldBack shouldBe 1
+        // v1 goes into K and comes out west; once it has passed P8, v13 may follow the track.
+        f.allocate(v1, "P9-K", "K", "L")
+        v1.granted shouldContainExactly listOf(setOf("P9-K", "K", "L"))
+    }
 })
