@@ -20,10 +20,7 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
     private val orderStates = HashMap<String, String>()
     private val dispatchableAt = HashMap<String, Long>()
     private val assignLatencies = ArrayList<Double>()
-    private val allocations = HashMap<String, Set<String>>()
-    private val positions = HashMap<String, String?>()
-    private val conflicts = HashSet<String>()
-    private val sharedPositions = HashSet<String>()
+    private val fleet = FleetConflicts()
     private var deadlocks = 0
     private var missed = 0
     private val eventCounts = HashMap<String, Int>()
@@ -41,9 +38,9 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
 
     fun assignLatenciesMillis(): List<Double> = synchronized(lock) { assignLatencies.toList() }
 
-    fun doubleAllocations(): Int = synchronized(lock) { conflicts.size }
+    fun doubleAllocations(): Int = synchronized(lock) { fleet.doubleAllocations() }
 
-    fun sharedPositions(): Int = synchronized(lock) { sharedPositions.size }
+    fun sharedPositions(): Int = synchronized(lock) { fleet.sharedPositions() }
 
     fun deadlockNotifications(): Int = synchronized(lock) { deadlocks }
 
@@ -81,14 +78,12 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
      */
     private fun onSnapshot(topic: String?, objects: List<JsonObject>) {
         if (topic != "vehicles") return objects.forEach { update(topic, it, null) }
-        allocations.clear()
-        positions.clear()
-        objects.forEach { vehicle ->
-            val name = vehicle.string("name") ?: return@forEach
-            allocations[name] = vehicle.heldResources()
-            positions[name] = vehicle.string("currentPosition")
-        }
-        allocations.keys.forEach(::checkConflicts)
+        fleet.snapshot(
+            objects.mapNotNull { vehicle ->
+                val name = vehicle.string("name") ?: return@mapNotNull null
+                FleetConflicts.Standing(name, vehicle.heldResources(), vehicle.string("currentPosition"))
+            },
+        )
     }
 
     private fun update(topic: String?, current: JsonObject?, previous: JsonObject?) {
@@ -117,28 +112,13 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
 
     private fun onVehicle(vehicle: JsonObject) {
         val name = vehicle.string("name") ?: return
-        allocations[name] = vehicle.heldResources()
-        positions[name] = vehicle.string("currentPosition")
-        checkConflicts(name)
+        fleet.vehicle(FleetConflicts.Standing(name, vehicle.heldResources(), vehicle.string("currentPosition")))
     }
 
     private fun JsonObject.heldResources(): Set<String> = array("allocatedResources")
         .flatMap { (it as? JsonArray).orEmpty() }
         .mapNotNull { (it as? JsonPrimitive)?.content }
         .toSet()
-
-    /** Records every resource [name] holds that another vehicle holds too, and another vehicle on its point. */
-    private fun checkConflicts(name: String) {
-        val held = allocations[name].orEmpty()
-        allocations.forEach { (other, resources) ->
-            if (other == name) return@forEach
-            resources.intersect(held).forEach { conflicts += "${minOf(name, other)}|${maxOf(name, other)}|$it" }
-        }
-        val position = positions[name] ?: return
-        positions.forEach { (other, at) ->
-            if (other != name && at == position) sharedPositions += "${minOf(name, other)}|${maxOf(name, other)}|$at"
-        }
-    }
 
     private fun count(message: JsonObject, chars: Int) = synchronized(lock) {
         if (message.string("type") != "event") return
