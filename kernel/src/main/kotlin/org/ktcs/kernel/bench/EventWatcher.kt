@@ -112,7 +112,9 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
 
     private fun onVehicle(vehicle: JsonObject) {
         val name = vehicle.string("name") ?: return
-        fleet.vehicle(FleetConflicts.Standing(name, vehicle.heldResources(), vehicle.string("currentPosition")))
+        // Left out as unchanged (the subscription asks for that), the resources are the ones the vehicle held before.
+        val held = if ("allocatedResources" in vehicle) vehicle.heldResources() else fleet.held(name)
+        fleet.vehicle(FleetConflicts.Standing(name, held, vehicle.string("currentPosition")))
     }
 
     private fun JsonObject.heldResources(): Set<String> = array("allocatedResources")
@@ -148,8 +150,9 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
     private companion object {
         const val CONNECT_SECONDS = 10L
 
-        // As the browser overview subscribes: only a removed object's previous state.
+        // As the browser overview subscribes: only a removed object's previous state, no unchanged large fields.
         const val SUBSCRIPTION =
-            """{"type":"subscribe","topics":["vehicles","transportOrders","notifications"],"previous":false}"""
+            """{"type":"subscribe","topics":["vehicles","transportOrders","notifications"],"previous":false,""" +
+                """"omitUnchanged":true}"""
     }
 }

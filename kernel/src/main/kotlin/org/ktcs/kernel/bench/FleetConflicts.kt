@@ -21,6 +21,9 @@ internal class FleetConflicts {
 
     fun sharedPositions(): Int = shared.size
 
+    /** What [name] holds as last seen. */
+    fun held(name: String): Set<String> = allocations[name].orEmpty()
+
     /** A snapshot replaces the whole fleet at once: checking it vehicle by vehicle against older states would not. */
     fun snapshot(vehicles: List<Standing>) {
         allocations.clear()

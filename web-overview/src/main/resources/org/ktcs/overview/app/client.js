@@ -90,8 +90,9 @@ export class KtcsClient {
     this.socket = socket;
     socket.onopen = () => {
       this.attempt = 0;
-      // Only a removed object's previous state is used (its name), so the others are not sent at all.
-      socket.send(JSON.stringify({ type: 'subscribe', topics: TOPICS, previous: false }));
+      // Only a removed object's previous state is used (its name), so the others are not sent at all; nor are the
+      // large fields that did not change (an order's routes while it advances step by step): applyEvent keeps them.
+      socket.send(JSON.stringify({ type: 'subscribe', topics: TOPICS, previous: false, omitUnchanged: true }));
       this.setConnected(true);
     };
     socket.onmessage = (message) => this.receive(parseJson(message.data));
@@ -142,9 +143,14 @@ export class KtcsClient {
     else this.state.set(topic, new Map(objects.map((object) => [object.name, object])));
   }
 
-  applyEvent({ topic, previous, current }) {
+  applyEvent({ topic, previous, current, unchanged }) {
     const state = this.state.get(topic);
     if (!state) return;
+    // The fields left out as unchanged are put back from the object's state before, so listeners see whole objects.
+    if (unchanged && current && !LIST_TOPICS.has(topic)) {
+      const before = state.get(current.name);
+      if (before) for (const field of unchanged) current[field] = before[field];
+    }
     if (LIST_TOPICS.has(topic)) {
       state.push(current);
       if (state.length > 1000) state.shift();

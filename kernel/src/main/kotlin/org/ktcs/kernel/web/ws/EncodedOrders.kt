@@ -21,7 +21,10 @@ internal object EncodedOrders {
     @OptIn(ExperimentalSerializationApi::class)
     private val markLiteral = JsonUnquotedLiteral("\u0001")
 
-    fun utf8(order: TransportOrder): ByteArray {
+    fun utf8(order: TransportOrder): ByteArray = marked(order).full
+
+    /** [order] encoded with a mark where each route goes, and the routes: spliced together only when needed. */
+    fun marked(order: TransportOrder): Marked {
         val routes = order.driveOrders.map { EncodedRoutes.utf8Of("${order.name}/${it.name}", it.route) }
         val dto = order.toSseDto()
         val marked = dto.copy(
@@ -29,8 +32,23 @@ internal object EncodedOrders {
                 if (routes[index] == null) driveOrder else driveOrder.copy(route = markLiteral)
             },
         )
-        val text = utf8(V1Json.json.encodeToString(SseTransportOrderDto.serializer(), marked))
-        return splice(text, routes.filterNotNull())
+        return Marked(
+            utf8(V1Json.json.encodeToString(SseTransportOrderDto.serializer(), marked)),
+            routes.filterNotNull(),
+        )
+    }
+
+    /** An order's JSON with its routes' marks ([text]), and the routes' bytes in order. */
+    class Marked(private val text: ByteArray, private val routes: List<ByteArray>) {
+        /** The whole order. */
+        val full: ByteArray by lazy { splice(text, routes) }
+
+        /**
+         * The order without its top-level [fields]: cut from the marked text, which is short, so that a client that
+         * has the routes does not cost a scan over them.
+         */
+        fun without(fields: List<String>): ByteArray =
+            splice(withoutFields(text, fields), if ("driveOrders" in fields) emptyList() else routes)
     }
 
     /** [text] with each [MARK] replaced by the next of [routes]. */

@@ -1,5 +1,7 @@
 package org.ktcs.kernel.web.ws
 
+import kotlinx.serialization.EncodeDefault
+import kotlinx.serialization.ExperimentalSerializationApi
 import kotlinx.serialization.SerialName
 import kotlinx.serialization.Serializable
 import kotlinx.serialization.json.JsonElement
@@ -10,10 +12,17 @@ const val WS_PROTOCOL_VERSION = 1
 /**
  * What a client may say: which topics it wants. Unknown topics are refused with an error message. With [previous]
  * `false` events carry the previous state only for a removed object (else `null`): a client that keeps the latest
- * state of each object needs no more, and the stream is half as long.
+ * state of each object needs no more, and the stream is half as long. With [omitUnchanged] an event's `current` leaves
+ * out the large fields that did not change (an order's drive orders, a vehicle's claimed and allocated resources, ...)
+ * and names them in [WsEvent.unchanged]: the client keeps them from the object's state before.
  */
 @Serializable
-data class WsClientMessage(val type: String, val topics: List<String> = emptyList(), val previous: Boolean = true)
+data class WsClientMessage(
+    val type: String,
+    val topics: List<String> = emptyList(),
+    val previous: Boolean = true,
+    val omitUnchanged: Boolean = false,
+)
 
 /** What the server says. */
 @Serializable
@@ -30,7 +39,10 @@ data class WsSnapshot(
     override val v: Int = WS_PROTOCOL_VERSION,
 ) : WsServerMessage
 
-/** One change, in kernel order: [previous] is `null` for a new object, [current] for a removed one. */
+/**
+ * One change, in kernel order: [previous] is `null` for a new object, [current] for a removed one. [unchanged] names the
+ * fields left out of [current] because they are as before (only for a client that subscribed with `omitUnchanged`).
+ */
 @Serializable
 @SerialName("event")
 data class WsEvent(
@@ -38,6 +50,9 @@ data class WsEvent(
     val seq: Long,
     val previous: JsonElement?,
     val current: JsonElement?,
+    @OptIn(ExperimentalSerializationApi::class)
+    @EncodeDefault(EncodeDefault.Mode.NEVER)
+    val unchanged: List<String>? = null,
     override val v: Int = WS_PROTOCOL_VERSION,
 ) : WsServerMessage
 

@@ -34,6 +34,7 @@ class WsSession internal constructor(
     private val json = V1Json.json
     private var topics = emptySet<WsTopic>()
     private var withPrevious = true
+    private var omitUnchanged = false
     private var sequence = 0L
 
     suspend fun run() = coroutineScope {
@@ -45,6 +46,7 @@ class WsSession internal constructor(
                 feed?.cancelAndJoin()
                 topics = message.topics.mapNotNullTo(LinkedHashSet(), WsTopic::of)
                 withPrevious = message.previous
+                omitUnchanged = message.omitUnchanged
                 feed = launch { streamForever() }
             }
         } catch (error: FrameTooBigException) {
@@ -139,7 +141,8 @@ class WsSession internal constructor(
         if (wanted.isEmpty()) return
         for (event in WsBatch.coalesce(wanted)) {
             val change = WsTopics.change(event, encoded) ?: continue
-            socket.send(Frame.Text(true, change.eventBytes(sequence++, withPrevious)))
+            val unchanged = if (omitUnchanged) Unchanged.fieldsOf(event) else emptyList()
+            socket.send(Frame.Text(true, change.eventBytes(sequence++, withPrevious, unchanged)))
         }
         flush()
     }

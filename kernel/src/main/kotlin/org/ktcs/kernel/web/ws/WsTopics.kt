@@ -63,7 +63,16 @@ internal object WsTopics {
     fun change(event: KernelEvent, encoded: EncodedObjects = EncodedObjects()): Change? = when (event) {
         is VehicleEvent -> Change.of(WsTopic.VEHICLES, event, encoded::vehicle)
 
-        is TransportOrderEvent -> Change.of(WsTopic.TRANSPORT_ORDERS, event, encoded::order)
+        is TransportOrderEvent -> {
+            val current by lazy(LazyThreadSafetyMode.NONE) { event.current?.let(encoded::order) }
+            Change(
+                WsTopic.TRANSPORT_ORDERS,
+                { event.previous?.let { encoded.order(it).full } },
+                { current?.full },
+                removed = event.current == null,
+                currentWithout = { fields -> current!!.without(fields) },
+            )
+        }
 
         is OrderSequenceEvent -> Change.of(WsTopic.ORDER_SEQUENCES, event) { utf8(json.encodeToString(it.toSseDto())) }
 
@@ -90,11 +99,11 @@ internal fun utf8(text: String): ByteArray = text.toByteArray(Charsets.UTF_8)
 internal class EncodedObjects(capacity: Int = DEFAULT_CAPACITY) {
     private val vehicles =
         LastEncoded<Vehicle, ByteArray>(capacity) { utf8(V1Json.json.encodeToString(it.toSseDto())) }
-    private val orders = LastEncoded<TransportOrder, ByteArray>(capacity, EncodedOrders::utf8)
+    private val orders = LastEncoded<TransportOrder, EncodedOrders.Marked>(capacity, EncodedOrders::marked)
 
     fun vehicle(vehicle: Vehicle): ByteArray = vehicles.of(vehicle.name, vehicle)
 
-    fun order(order: TransportOrder): ByteArray = orders.of(order.name, order)
+    fun order(order: TransportOrder): EncodedOrders.Marked = orders.of(order.name, order)
 
     private companion object {
         const val DEFAULT_CAPACITY = 512
@@ -102,20 +111,40 @@ internal class EncodedObjects(capacity: Int = DEFAULT_CAPACITY) {
 }
 
 /** One change of a topic's object, its states as the UTF-8 JSON that goes on the wire. */
-internal class Change(val topic: WsTopic, val previous: ByteArray?, val current: ByteArray?) {
+internal class Change(
+    val topic: WsTopic,
+    previousOf: () -> ByteArray?,
+    currentOf: () -> ByteArray?,
+    private val removed: Boolean,
+    private val currentWithout: ((List<String>) -> ByteArray)? = null,
+) {
+    constructor(topic: WsTopic, previous: ByteArray?, current: ByteArray?) :
+        this(topic, { previous }, { current }, removed = current == null)
+
+    // Encoded only if sent: a client that wants no previous states, or gets `current` without some fields, never
+    // costs the whole state's bytes.
+    val previous: ByteArray? by lazy(LazyThreadSafetyMode.NONE, previousOf)
+    val current: ByteArray? by lazy(LazyThreadSafetyMode.NONE, currentOf)
+
     /**
      * The [WsEvent] message numbered [seq] as UTF-8 JSON, put together from the states' bytes: copying them is all a
      * session does per event, however many sessions follow it. Without [withPrevious], `previous` is `null` unless the
-     * object was removed.
+     * object was removed. The fields named in [unchanged] are left out of `current` and listed in `unchanged`.
      */
-    fun eventBytes(seq: Long, withPrevious: Boolean = true): ByteArray {
+    fun eventBytes(seq: Long, withPrevious: Boolean = true, unchanged: List<String> = emptyList()): ByteArray {
         val head = utf8("""{"type":"event","topic":"${topic.wireName}","seq":$seq,"previous":""")
         // A client that asked for no previous states still needs a removed object's, to know which one went.
-        val previous = previous?.takeIf { withPrevious || current == null } ?: NULL
-        val current = current ?: NULL
-        val out = ByteArray(head.size + previous.size + CURRENT.size + current.size + TAIL.size)
+        val previous = if (withPrevious || removed) previous ?: NULL else NULL
+        val left = if (removed) emptyList() else unchanged
+        val current = when {
+            removed -> NULL
+            left.isEmpty() -> current!!
+            else -> currentWithout?.invoke(left) ?: withoutFields(current!!, left)
+        }
+        val listed = if (left.isEmpty()) EMPTY else utf8(left.joinToString(",", ",\"unchanged\":[", "]") { "\"$it\"" })
+        val out = ByteArray(head.size + previous.size + CURRENT.size + current.size + listed.size + TAIL.size)
         var at = 0
-        for (part in arrayOf(head, previous, CURRENT, current, TAIL)) {
+        for (part in arrayOf(head, previous, CURRENT, current, listed, TAIL)) {
             part.copyInto(out, at)
             at += part.size
         }
@@ -124,11 +153,16 @@ internal class Change(val topic: WsTopic, val previous: ByteArray?, val current:
 
     companion object {
         private val NULL = utf8("null")
+        private val EMPTY = ByteArray(0)
         private val CURRENT = utf8(""","current":""")
         private val TAIL = utf8(""","v":$WS_PROTOCOL_VERSION}""")
 
-        fun <T : Any> of(topic: WsTopic, event: ObjectEvent<T>, encode: (T) -> ByteArray) =
-            Change(topic, event.previous?.let(encode), event.current?.let(encode))
+        fun <T : Any> of(topic: WsTopic, event: ObjectEvent<T>, encode: (T) -> ByteArray) = Change(
+            topic,
+            { event.previous?.let(encode) },
+            { event.current?.let(encode) },
+            removed = event.current == null,
+        )
     }
 }
 

@@ -2,7 +2,10 @@ package org.ktcs.kernel.web.ws
 
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldNotContain
 import kotlinx.serialization.json.Json
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.jsonObject
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.DriveOrder
 import org.ktcs.api.order.Route
@@ -33,5 +36,24 @@ class EncodedOrdersTest : FunSpec({
 
         Json.parseToJsonElement(spliced) shouldBe
             Json.parseToJsonElement(V1Json.json.encodeToString(SseTransportOrderDto.serializer(), order.toSseDto()))
+    }
+
+    test("an order without some fields is cut from the marked text: its routes go in only with its drive orders") {
+        val route = Route(listOf(Step("A--B", "A", "B"), Step("B--C", "B", "C", routeIndex = 1)), costs = 4000)
+        val order = TransportOrder(
+            name = "T1",
+            driveOrders = listOf(DriveOrder("D1", Destination("L1", "Load cargo"), route)),
+            properties = mapOf("k" to "v"),
+            creationTime = Instant.EPOCH,
+        )
+        val whole = Json.parseToJsonElement(EncodedOrders.utf8(order).decodeToString()).jsonObject
+        val marked = EncodedOrders.marked(order)
+
+        val withRoutes = Json.parseToJsonElement(marked.without(listOf("properties")).decodeToString()).jsonObject
+        val withoutRoutes = marked.without(listOf("driveOrders", "properties")).decodeToString()
+
+        withRoutes shouldBe JsonObject(whole - "properties")
+        Json.parseToJsonElement(withoutRoutes) shouldBe JsonObject(whole - "properties" - "driveOrders")
+        withoutRoutes shouldNotContain "A--B"
     }
 })

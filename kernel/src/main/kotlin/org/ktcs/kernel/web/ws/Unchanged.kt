@@ -1,0 +1,108 @@
+package org.ktcs.kernel.web.ws
+
+import org.ktcs.api.event.KernelEvent
+import org.ktcs.api.event.TransportOrderEvent
+import org.ktcs.api.event.VehicleEvent
+
+/**
+ * The large fields of an event's object that a client keeping the object's latest state already has: an order under
+ * way changes its step index many times a second while its drive orders and their routes (most of its JSON) stay as
+ * they were, and a driving vehicle reports its position while its claimed route stays. A client that subscribes with
+ * `omitUnchanged` gets events without them, and the list of what was left out (see [withoutFields]).
+ */
+internal object Unchanged {
+    fun fieldsOf(event: KernelEvent): List<String> = when (event) {
+        is VehicleEvent -> {
+            val (before, after) = (event.previous ?: return emptyList()) to (event.current ?: return emptyList())
+            buildList {
+                if (before.claimedResources == after.claimedResources) add("claimedResources")
+                if (before.allocatedResources == after.allocatedResources) add("allocatedResources")
+                if (before.properties == after.properties) add("properties")
+                if (before.acceptableOrderTypes == after.acceptableOrderTypes) add("acceptableOrderTypes")
+            }
+        }
+
+        is TransportOrderEvent -> {
+            val (before, after) = (event.previous ?: return emptyList()) to (event.current ?: return emptyList())
+            buildList {
+                if (before.driveOrders == after.driveOrders) add("driveOrders")
+                if (before.properties == after.properties) add("properties")
+                if (before.history == after.history) add("history")
+                if (before.dependencies == after.dependencies) add("dependencies")
+            }
+        }
+
+        else -> emptyList()
+    }
+}
+
+/**
+ * [json], a JSON object as UTF-8 (as kotlinx writes it: no whitespace), without its top-level fields named in [names].
+ * A scan over the bytes, far cheaper than parsing: the object's states are at hand only as bytes.
+ */
+internal fun withoutFields(json: ByteArray, names: Collection<String>): ByteArray {
+    if (names.isEmpty()) return json
+    val keys = names.map { utf8("\"$it\":") }
+    val out = ByteArray(json.size)
+    out[0] = json[0]
+    var length = 1
+    var at = 1
+    while (at < json.size && json[at] != CLOSE_BRACE) {
+        val end = endOfValue(json, endOfString(json, at) + 1)
+        if (keys.none { startsWith(json, at, it) }) {
+            if (length > 1) out[length++] = COMMA
+            json.copyInto(out, length, at, end)
+            length += end - at
+        }
+        at = if (end < json.size && json[end] == COMMA) end + 1 else end
+    }
+    out[length++] = CLOSE_BRACE
+    return out.copyOf(length)
+}
+
+private const val QUOTE = '"'.code.toByte()
+private const val BACKSLASH = '\\'.code.toByte()
+private const val COMMA = ','.code.toByte()
+private const val OPEN_BRACE = '{'.code.toByte()
+private const val CLOSE_BRACE = '}'.code.toByte()
+private const val OPEN_BRACKET = '['.code.toByte()
+private const val CLOSE_BRACKET = ']'.code.toByte()
+
+private fun startsWith(json: ByteArray, at: Int, prefix: ByteArray): Boolean {
+    if (at + prefix.size > json.size) return false
+    for (i in prefix.indices) if (json[at + i] != prefix[i]) return false
+    return true
+}
+
+// The index just past the string whose opening quote is at [at].
+private fun endOfString(json: ByteArray, at: Int): Int {
+    var i = at + 1
+    while (true) {
+        val b = json[i]
+        if (b == QUOTE) return i + 1
+        i += if (b == BACKSLASH) 2 else 1
+    }
+}
+
+// The index just past the value starting at [at] (a comma or the closing brace of the object follows it).
+private fun endOfValue(json: ByteArray, at: Int): Int {
+    var depth = 0
+    var i = at
+    while (i < json.size) {
+        val b = json[i]
+        if (b == QUOTE) {
+            i = endOfString(json, i)
+            continue
+        }
+        if (b == OPEN_BRACE || b == OPEN_BRACKET) {
+            depth++
+        } else if (b == CLOSE_BRACE || b == CLOSE_BRACKET) {
+            if (depth == 0) return i
+            depth--
+        } else if (b == COMMA && depth == 0) {
+            return i
+        }
+        i++
+    }
+    return i
+}

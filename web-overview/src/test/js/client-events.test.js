@@ -1,0 +1,41 @@
+// Unit checks of the overview's WebSocket state (node --test): events that leave out unchanged fields are completed
+// from the object's state before, so the state and every listener see whole objects.
+import assert from 'node:assert/strict';
+import { test } from 'node:test';
+import { KtcsClient } from '../../main/resources/org/ktcs/overview/app/client.js';
+
+const order = {
+  name: 'T1', state: 'BEING_PROCESSED', currentRouteStepIndex: 2, properties: { k: 'v' },
+  driveOrders: [{ name: 'D1', route: { steps: [{ destinationPoint: 'B' }] } }],
+};
+
+test('an event without its unchanged fields keeps them from the state before', () => {
+  const client = new KtcsClient();
+  const seen = [];
+  client.listeners.get('transportOrders').add((message) => { if (message.type === 'event') seen.push(message.current); });
+  client.receive({ type: 'snapshot', topic: 'transportOrders', objects: [order] });
+
+  client.receive({
+    type: 'event', topic: 'transportOrders', seq: 1, previous: null,
+    current: { name: 'T1', state: 'BEING_PROCESSED', currentRouteStepIndex: 3 },
+    unchanged: ['driveOrders', 'properties'],
+  });
+
+  const now = client.state.get('transportOrders').get('T1');
+  assert.equal(now.currentRouteStepIndex, 3);
+  assert.deepEqual(now.driveOrders, order.driveOrders);
+  assert.deepEqual(now.properties, { k: 'v' });
+  assert.deepEqual(seen[0].driveOrders, order.driveOrders);
+});
+
+test('an event with every field replaces the object as before', () => {
+  const client = new KtcsClient();
+  client.receive({ type: 'snapshot', topic: 'transportOrders', objects: [order] });
+
+  client.receive({
+    type: 'event', topic: 'transportOrders', seq: 1, previous: null,
+    current: { ...order, driveOrders: [] },
+  });
+
+  assert.deepEqual(client.state.get('transportOrders').get('T1').driveOrders, []);
+});
