@@ -3,6 +3,8 @@ package org.ktcs.kernel.web.ws
 import org.ktcs.api.event.KernelEvent
 import org.ktcs.api.event.TransportOrderEvent
 import org.ktcs.api.event.VehicleEvent
+import org.ktcs.api.model.Vehicle
+import org.ktcs.api.order.TransportOrder
 
 /**
  * The large fields of an event's object that a client keeping the object's latest state already has: an order under
@@ -11,28 +13,30 @@ import org.ktcs.api.event.VehicleEvent
  * `omitUnchanged` gets events without them, and the list of what was left out (see [withoutFields]).
  */
 internal object Unchanged {
+    // The fields that may be left out, each with how to read it from the domain object; immutable values share what
+    // did not change, so most comparisons stop at the identity check.
+    private val vehicleFields: List<Pair<String, (Vehicle) -> Any?>> = listOf(
+        "claimedResources" to Vehicle::claimedResources,
+        "allocatedResources" to Vehicle::allocatedResources,
+        "properties" to Vehicle::properties,
+        "acceptableOrderTypes" to Vehicle::acceptableOrderTypes,
+    )
+    private val orderFields: List<Pair<String, (TransportOrder) -> Any?>> = listOf(
+        "driveOrders" to TransportOrder::driveOrders,
+        "properties" to TransportOrder::properties,
+        "history" to TransportOrder::history,
+        "dependencies" to TransportOrder::dependencies,
+    )
+
     fun fieldsOf(event: KernelEvent): List<String> = when (event) {
-        is VehicleEvent -> {
-            val (before, after) = (event.previous ?: return emptyList()) to (event.current ?: return emptyList())
-            buildList {
-                if (before.claimedResources == after.claimedResources) add("claimedResources")
-                if (before.allocatedResources == after.allocatedResources) add("allocatedResources")
-                if (before.properties == after.properties) add("properties")
-                if (before.acceptableOrderTypes == after.acceptableOrderTypes) add("acceptableOrderTypes")
-            }
-        }
-
-        is TransportOrderEvent -> {
-            val (before, after) = (event.previous ?: return emptyList()) to (event.current ?: return emptyList())
-            buildList {
-                if (before.driveOrders == after.driveOrders) add("driveOrders")
-                if (before.properties == after.properties) add("properties")
-                if (before.history == after.history) add("history")
-                if (before.dependencies == after.dependencies) add("dependencies")
-            }
-        }
-
+        is VehicleEvent -> same(event.previous, event.current, vehicleFields)
+        is TransportOrderEvent -> same(event.previous, event.current, orderFields)
         else -> emptyList()
+    }
+
+    private fun <T : Any> same(before: T?, after: T?, fields: List<Pair<String, (T) -> Any?>>): List<String> {
+        if (before == null || after == null) return emptyList()
+        return fields.filter { (_, read) -> read(before) == read(after) }.map { it.first }
     }
 }
 
