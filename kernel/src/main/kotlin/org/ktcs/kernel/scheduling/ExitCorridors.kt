@@ -36,6 +36,15 @@ internal class ExitCorridors(model: PlantModel) {
 
     fun isPoint(name: String): Boolean = name in points
 
+    /**
+     * Whether [point] is the end of a dead end: its only way out leads back to the one point it is reached from (a
+     * park bay or station stub beside an aisle), not on to another (a detour bay beside a one-way lane).
+     */
+    fun isDeadEnd(point: String): Boolean {
+        val out = exits[point].orEmpty().mapTo(HashSet()) { it.second }
+        return out.size == 1 && exits[out.single()].orEmpty().any { it.second == point }
+    }
+
     fun isLocation(name: String): Boolean = name in locations
 
     /**

@@ -40,6 +40,8 @@ internal class RouteSafety(
 
     fun isPoint(name: String): Boolean = exits.isPoint(name)
 
+    fun isDeadEnd(point: String): Boolean = exits.isDeadEnd(point)
+
     /**
      * Replaces [client]'s claim with [route] (keys per step, in driving order) ending at [end]; [stops] names, per
      * step, the point where the vehicle stops for an operation at its end (null: it drives on).

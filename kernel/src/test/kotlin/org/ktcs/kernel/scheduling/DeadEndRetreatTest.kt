@@ -1,0 +1,47 @@
+package org.ktcs.kernel.scheduling
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.shouldBe
+import org.ktcs.api.model.PointType
+import org.ktcs.api.scheduling.Retreat
+
+/**
+ * A vehicle held back retreats into a dead-end bay only after [DefaultScheduler]'s longer wait: driving in and back
+ * out through the aisle pays only for a vehicle stuck for longer than a queue moving along.
+ */
+class DeadEndRetreatTest : FunSpec({
+    test("a stub's end is a dead end; a detour bay and a point on a lane are not") {
+        val exits = ExitCorridors(plant("A-B", "B-A", "B-K", "K-B", "B-C", "C-D", "C-P", "P-D"))
+
+        exits.isDeadEnd("K") shouldBe true
+        exits.isDeadEnd("P") shouldBe false
+        exits.isDeadEnd("C") shouldBe false
+        exits.isDeadEnd("A") shouldBe true
+    }
+
+    test("a vehicle held back head-on retreats into the dead-end bay beside it after six seconds, not after two") {
+        // The two-way track A - B - C with dead-end park bays K (at B) and L (at C). v1 at A and v2 at C are headed
+        // for each other's points: v1's step onto B is held back for good.
+        val model = plant("A-B", "B-A", "B-C", "C-B", "B-K", "K-B", "C-L", "L-C").let { model ->
+            model.copy(
+                points = model.points.map {
+                    if (it.name in setOf("K", "L")) it.copy(type = PointType.PARK_POSITION) else it
+                },
+            )
+        }
+        val f = SchedulerFixture(model)
+        val v1 = f.client("v1").also { f.scheduler.allocateNow(it, setOf("A")) }
+        val v2 = f.client("v2").also { f.scheduler.allocateNow(it, setOf("C")) }
+        f.scheduler.claim(v1, listOf(setOf("A-B", "B"), setOf("B-C", "C")))
+        f.scheduler.claim(v2, listOf(setOf("C-B", "B"), setOf("B-A", "A")))
+        f.allocate(v1, "A-B", "B")
+        v1.granted.shouldBeEmpty()
+
+        f.clock.advance(2_000)
+        f.scheduler.retreats { true }.toList().shouldBeEmpty()
+
+        f.clock.advance(4_000)
+        f.scheduler.retreats { true }.toList() shouldBe listOf(Retreat("v1", "K"))
+    }
+})
