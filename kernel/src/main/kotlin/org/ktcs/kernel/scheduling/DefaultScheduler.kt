@@ -6,6 +6,9 @@ import org.ktcs.api.model.PlantModel
 import org.ktcs.api.scheduling.Retreat
 import org.ktcs.api.scheduling.Scheduler
 import org.ktcs.api.scheduling.SchedulerClient
+import org.ktcs.kernel.scheduling.TrafficTimers.DEAD_END_RETREAT_MILLIS
+import org.ktcs.kernel.scheduling.TrafficTimers.HELD_BACK_REPORT_MILLIS
+import org.ktcs.kernel.scheduling.TrafficTimers.PARK_TEST_PATIENCE_MILLIS
 import org.slf4j.LoggerFactory
 import java.util.TreeSet
 
@@ -216,10 +219,13 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     // What a client will still hold once it has driven everything it was granted (everything, if it drives nothing).
     // A last grant the client no longer holds (it refused it, or gave it back) says nothing about where it goes.
     private fun keptBy(client: String): Set<String> {
-        val holds = occupancy.holdingKeys(client)
-        val last = lastGrants[client]?.takeIf { holds.containsAll(it.physicalKeys) } ?: return holds
+        val last = heldLastGrant(client) ?: return occupancy.holdingKeys(client)
         return last.keys + keysOf(last.client.heldAfter(last.resources))
     }
+
+    // The client's last grant if it still holds it; a grant it refused or gave back says nothing about where it is.
+    private fun heldLastGrant(client: String): Request? =
+        lastGrants[client]?.takeIf { occupancy.holdingKeys(client).containsAll(it.physicalKeys) }
 
     /**
      * Whether [client]'s claim makes it wait, through others, for itself: its first step leads into vehicles that
@@ -251,10 +257,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         }
 
     // The point a client stands on or was granted last and still holds, if known.
-    private fun frontOf(client: String): String? {
-        val last = lastGrants[client]?.takeIf { occupancy.holdingKeys(client).containsAll(it.physicalKeys) }
-        return last?.let { safety.pointOf(it.resources) } ?: occupancy.holdingKeys(client).singleOrNull(safety::isPoint)
-    }
+    private fun frontOf(client: String): String? = heldLastGrant(client)?.let { safety.pointOf(it.resources) }
+        ?: occupancy.holdingKeys(client).singleOrNull(safety::isPoint)
 
     /**
      * Those held back for longer than two watchdog periods, or [DEAD_END_RETREAT_MILLIS] for a retreat into a dead-end
@@ -378,25 +382,6 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     }
 
     private companion object {
-        /** Two watchdog periods: shorter refusals are queues moving along, not vehicles stuck face to face. */
-        const val HELD_BACK_REPORT_MILLIS = 2_000L
-
-        /**
-         * How long (vehicle time) a grant is held back before its vehicle retreats into a dead-end bay. Such a retreat
-         * drives in and back out over the point the vehicle left, through the aisle others queue in, so it pays only
-         * for a vehicle stuck for longer than a queue moving along: on the warehouse (all bays dead ends) waiting 6 s
-         * instead of 2 s cut the makespan by a fifth (guide, section 12, "Session 19"). A detour bay beside a one-way
-         * lane (the grids') is taken after two watchdog periods: there the retreat is a way forward.
-         */
-        const val DEAD_END_RETREAT_MILLIS = 6_000L
-
-        /**
-         * How long (vehicle time) the park test may hold a grant back before the local rule alone decides it. On the
-         * warehouse most of the test's refusals end by this patience, not by a release, so it sets the pace there;
-         * with the corridors' direction records a short one no longer lets vehicles fill an aisle from both ends
-         * (guide, section 12). The grids never reach it.
-         */
-        const val PARK_TEST_PATIENCE_MILLIS = 3_000L
         private val log = LoggerFactory.getLogger(DefaultScheduler::class.java)
     }
 }

@@ -8,7 +8,7 @@ import org.ktcs.api.model.PointType
 
 /**
  * The park test is a preference, not a wall: a grant it holds back is left to the local rule alone after three seconds
- * of vehicle time (`DefaultScheduler.PARK_TEST_PATIENCE_MILLIS`), not before.
+ * of vehicle time (`TrafficTimers.PARK_TEST_PATIENCE_MILLIS`), not before.
  */
 class ParkTestPatienceTest : FunSpec({
     // The one-way loop a -> b -> c -> d -> a with the park bay c -> P -> d beside it, a dead end d -> z, and park
