@@ -3,7 +3,9 @@ package org.ktcs.kernel.web
 import io.kotest.assertions.nondeterministic.eventually
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.engine.spec.tempdir
+import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.collections.shouldContainAll
+import io.kotest.matchers.collections.shouldNotContain
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.string.shouldStartWith
@@ -287,6 +289,33 @@ class WebApiTest : FunSpec({
             numbers shouldBe numbers.sorted()
             events.first()["previous"]!!.toString() shouldBe "null"
             events.map { it["current"]!!.jsonObject.text("state") } shouldBe listOf("RAW", "ACTIVE", "DISPATCHABLE")
+            socket.close()
+        } finally {
+            application.stop()
+        }
+    }
+
+    test("with omitUnchanged, events leave out the large fields that did not change; a wrong value gets an error") {
+        val (application, base) = start()
+        try {
+            val socket = WsTestClient(http, base)
+            socket.send("""{"type":"subscribe","topics":["transportOrders"],"omitUnchanged":"yes"}""")
+            val error = socket.next()
+            error["type"]!!.jsonPrimitive.content shouldBe "error"
+            error["message"]!!.jsonPrimitive.content shouldContain "omitUnchanged"
+
+            socket.send("""{"type":"subscribe","topics":["transportOrders"],"previous":false,"omitUnchanged":true}""")
+            socket.next()["type"]!!.jsonPrimitive.content shouldBe "snapshot"
+            call("POST", "$base/transportOrders/U1", order).statusCode() shouldBe 200
+            val events = generateSequence { socket.next() }.filter { it["type"]!!.jsonPrimitive.content == "event" }
+                .take(3).toList()
+
+            // A new order comes whole; its next state leaves out its properties, which are as before.
+            events.first()["unchanged"] shouldBe null
+            events.first()["current"]!!.jsonObject.keys shouldContain "properties"
+            val second = events[1]
+            second["unchanged"]!!.jsonArray.map { it.jsonPrimitive.content } shouldContain "properties"
+            second["current"]!!.jsonObject.keys shouldNotContain "properties"
             socket.close()
         } finally {
             application.stop()
