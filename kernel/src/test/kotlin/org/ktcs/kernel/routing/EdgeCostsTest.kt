@@ -99,15 +99,16 @@ class EdgeCostsTest : FunSpec({
         )
         val surcharged = RouterConfiguration(operationPointSurcharge = 200)
 
-        test("costs the surcharge more to drive onto, so a route only passing through goes round it") {
-            val route = routerFor(model, surcharged).route("A", "D").shouldNotBeNull()
+        test("costs the surcharge (200 % by default) more to drive onto, so a passing route goes round it") {
+            surcharged shouldBe RouterConfiguration()
+            val route = routerFor(model).route("A", "D").shouldNotBeNull()
 
             route.points shouldContainExactly listOf("A", "C", "D")
             route.costs shouldBe 3000
         }
 
-        test("is passed through with the surcharge off (the default) or smaller than the detour") {
-            routerFor(model).route("A", "D")?.points shouldBe
+        test("is passed through with the surcharge off or smaller than the detour") {
+            routerFor(model, RouterConfiguration(operationPointSurcharge = 0)).route("A", "D")?.points shouldBe
                 listOf("A", "S", "D")
             routerFor(model, RouterConfiguration(operationPointSurcharge = 50)).route("A", "D")?.costs shouldBe 2500
         }
