@@ -55,21 +55,23 @@ class ControllerDriverContext(
 
     override fun reportState(state: VehicleState) = later {
         val previous = env.plant.vehicle(vehicleName).state
-        env.plant.updateVehicle(vehicleName) { it.withState(state, env) }
-        if (previous != state) env.vehicleMayBeAvailable()
+        val vehicle = env.plant.updateVehicle(vehicleName) { it.withState(state, env) }
+        if (previous != state && (mayTakeWork(vehicle) || previous == VehicleState.CHARGING)) {
+            env.vehicleMayBeAvailable()
+        }
     }
 
     override fun reportEnergyLevel(percent: Int) = later {
         val previous = env.plant.vehicle(vehicleName).energyLevel
-        env.plant.updateVehicle(vehicleName) { it.copy(energyLevel = percent.coerceIn(0, 100)) }
-        if (previous != percent) env.vehicleMayBeAvailable()
+        val vehicle = env.plant.updateVehicle(vehicleName) { it.copy(energyLevel = percent.coerceIn(0, 100)) }
+        if (previous != percent && mayTakeWork(vehicle)) env.vehicleMayBeAvailable()
     }
 
     override fun reportLoadHandlingDevices(devices: List<LoadHandlingDevice>) = later {
         val previous = env.plant.vehicle(vehicleName).loadHandlingDevices
-        env.plant.updateVehicle(vehicleName) { it.copy(loadHandlingDevices = devices) }
+        val vehicle = env.plant.updateVehicle(vehicleName) { it.copy(loadHandlingDevices = devices) }
         // An emptied vehicle no longer vetoes orders that load it.
-        if (previous != devices) env.vehicleMayBeAvailable()
+        if (previous != devices && mayTakeWork(vehicle)) env.vehicleMayBeAvailable()
     }
 
     override fun commandExecuted(command: MovementCommand) = later { controller.onCommandExecuted(command) }
@@ -112,6 +114,18 @@ class ControllerDriverContext(
     }
 
     // Checked when the task runs: a report queued before retirement must not reach the next plant either.
+
+    /**
+     * Whether a report of [vehicle]'s may change what the dispatcher can give it or says about it: not while it works
+     * on an order it may not leave (not dispensable), unless it charges (its energy then decides whether it counts as
+     * recharged). Such a vehicle reports its state and energy many times per order, and each dispatcher run reads the
+     * whole fleet; it becomes available when its order ends, which runs the dispatcher anyway.
+     */
+    private fun mayTakeWork(vehicle: Vehicle): Boolean {
+        val order = vehicle.transportOrder ?: return true
+        return vehicle.state == VehicleState.CHARGING || env.orders.get(order)?.dispensable != false
+    }
+
     private fun later(action: () -> Unit) {
         env.context.execute { if (!retired) action() }
     }

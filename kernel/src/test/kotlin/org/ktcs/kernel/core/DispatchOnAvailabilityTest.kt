@@ -1,12 +1,19 @@
 package org.ktcs.kernel.core
 
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.ints.shouldBeGreaterThan
 import io.kotest.matchers.shouldBe
+import org.koin.dsl.module
+import org.ktcs.api.dispatching.Dispatcher
+import org.ktcs.api.model.VehicleState
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
+import org.ktcs.extension.KernelDefaults
 import org.ktcs.kernel.app.PlantModelLoader
 import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.dispatching.DefaultDispatcher
+import org.ktcs.kernel.dispatching.IncrementalDispatcher
 import org.ktcs.kernel.simulation.SimulationKernel
 
 /** The dispatcher runs the moment a vehicle becomes able to work, not at its next periodic run (10 s). */
@@ -38,6 +45,41 @@ class DispatchOnAvailabilityTest : FunSpec({
         }
     }
 
+    test("a vehicle busy with an order it may not leave runs no dispatcher when it reports state or energy") {
+        var runs = 0
+        val counted = module {
+            single<KernelDefaults> {
+                val scope = this
+                object : KernelDefaults {
+                    override fun dispatcher(): Dispatcher = CountingDispatcher(
+                        DefaultDispatcher(scope.get(), scope.get(), scope.get()),
+                    ) {
+                        runs++
+                    }
+                }
+            }
+        }
+        SimulationKernel(demo, config, listOf(drivers.module, counted)).use { kernel ->
+            kernel.now { createTransportOrder(TransportOrderCreation("T", trip, intendedVehicle = "Vehicle-01")) }
+            kernel.state("T") shouldBe TransportOrderState.BEING_PROCESSED
+            val busy = drivers.contexts.getValue("Vehicle-01")
+            val idle = drivers.contexts.getValue("Vehicle-02")
+
+            val before = runs
+            kernel.now {
+                busy.reportEnergyLevel(37)
+                busy.reportState(VehicleState.UNAVAILABLE)
+            }
+            runs shouldBe before
+            kernel.now { busy.reportState(VehicleState.CHARGING) }
+            runs shouldBeGreaterThan before
+
+            val charging = runs
+            kernel.now { idle.reportEnergyLevel(41) }
+            runs shouldBeGreaterThan charging
+        }
+    }
+
     test("a dispensable order replaced by real work says so in its history") {
         SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
             val far = listOf(Destination("Goods out 02", "NOP"))
@@ -52,3 +94,21 @@ class DispatchOnAvailabilityTest : FunSpec({
         }
     }
 })
+
+/** The kernel's dispatcher, counting its runs. */
+private class CountingDispatcher(private val dispatcher: DefaultDispatcher, private val ran: () -> Unit) :
+    IncrementalDispatcher {
+    override fun initialize() = dispatcher.initialize()
+
+    override fun terminate() = dispatcher.terminate()
+
+    override fun dispatch() {
+        ran()
+        dispatcher.dispatch()
+    }
+
+    override fun dispatchChanges(newOrders: Collection<String>) {
+        ran()
+        dispatcher.dispatchChanges(newOrders)
+    }
+}
