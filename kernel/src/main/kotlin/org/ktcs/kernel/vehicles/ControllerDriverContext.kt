@@ -113,8 +113,6 @@ class ControllerDriverContext(
         retired = true
     }
 
-    // Checked when the task runs: a report queued before retirement must not reach the next plant either.
-
     /**
      * Whether a report of [vehicle]'s may change what the dispatcher can give it or says about it: not while it works
      * on an order it may not leave (not dispensable), unless it charges (its energy then decides whether it counts as
@@ -126,6 +124,7 @@ class ControllerDriverContext(
         return vehicle.state == VehicleState.CHARGING || env.orders.get(order)?.dispensable != false
     }
 
+    // Checked when the task runs: a report queued before retirement must not reach the next plant either.
     private fun later(action: () -> Unit) {
         env.context.execute { if (!retired) action() }
     }
