@@ -127,9 +127,10 @@ internal class Change(
     val current: ByteArray? by lazy(LazyThreadSafetyMode.NONE, currentOf)
 
     /**
-     * The [WsEvent] message numbered [seq] as UTF-8 JSON, put together from the states' bytes: copying them is all a
-     * session does per event, however many sessions follow it. Without [withPrevious], `previous` is `null` unless the
-     * object was removed. The fields named in [unchanged] are left out of `current` and listed in `unchanged`.
+     * The [WsEvent] message numbered [seq] as UTF-8 JSON, put together from the states' bytes, which sessions share:
+     * copying them is all a session does per event, however many sessions follow it. Without [withPrevious], `previous`
+     * is `null` unless the object was removed. The fields named in [unchanged] are left out of `current` (a cut of its
+     * bytes, made by each session that asks for it) and listed in `unchanged`.
      */
     fun eventBytes(seq: Long, withPrevious: Boolean = true, unchanged: List<String> = emptyList()): ByteArray {
         val head = utf8("""{"type":"event","topic":"${topic.wireName}","seq":$seq,"previous":""")
