@@ -1,10 +1,7 @@
 package org.ktcs.kernel.bench
 
-import kotlinx.serialization.json.Json
-import kotlinx.serialization.json.JsonArray
-import kotlinx.serialization.json.JsonObject
 import kotlinx.serialization.json.JsonPrimitive
-import kotlinx.serialization.json.jsonObject
+import org.ktcs.kernel.bench.WatchedMessage.Observed
 import java.net.http.WebSocket
 import java.util.concurrent.CompletionStage
 import java.util.concurrent.TimeUnit
@@ -58,16 +55,10 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
         socket.abort()
     }
 
-    private fun onMessage(message: JsonObject) = synchronized(lock) {
-        when (message.string("type")) {
-            "snapshot" -> onSnapshot(message.string("topic"), message.array("objects").map { it.jsonObject })
-
-            "event" -> update(
-                message.string("topic"),
-                message["current"] as? JsonObject,
-                message["previous"] as? JsonObject,
-            )
-
+    private fun onMessage(message: WatchedMessage) = synchronized(lock) {
+        when (message.type) {
+            "snapshot" -> onSnapshot(message.topic, message.objects)
+            "event" -> update(message.topic, message.current, message.previous)
             "missed" -> missed++
         }
     }
@@ -76,17 +67,17 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
      * A snapshot replaces what the bench knew of its topic all at once: checking its vehicles one by one against
      * the others' older state would report conflicts that never existed.
      */
-    private fun onSnapshot(topic: String?, objects: List<JsonObject>) {
+    private fun onSnapshot(topic: String?, objects: List<Observed>) {
         if (topic != "vehicles") return objects.forEach { update(topic, it, null) }
         fleet.snapshot(
             objects.mapNotNull { vehicle ->
-                val name = vehicle.string("name") ?: return@mapNotNull null
-                FleetConflicts.Standing(name, vehicle.heldResources(), vehicle.string("currentPosition"))
+                val name = vehicle.name ?: return@mapNotNull null
+                FleetConflicts.Standing(name, vehicle.heldResources(), vehicle.currentPosition)
             },
         )
     }
 
-    private fun update(topic: String?, current: JsonObject?, previous: JsonObject?) {
+    private fun update(topic: String?, current: Observed?, previous: Observed?) {
         when (topic) {
             "transportOrders" -> current?.let(::onOrder)
             "vehicles" -> current?.let(::onVehicle)
@@ -94,9 +85,9 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
         }
     }
 
-    private fun onOrder(order: JsonObject) {
-        val name = order.string("name") ?: return
-        val state = order.string("state") ?: return
+    private fun onOrder(order: Observed) {
+        val name = order.name ?: return
+        val state = (order.state as? JsonPrimitive)?.takeIf { it.isString }?.content ?: return
         val before = orderStates.put(name, state)
         if (state == before) return
         val now = System.nanoTime()
@@ -110,26 +101,23 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
         }
     }
 
-    private fun onVehicle(vehicle: JsonObject) {
-        val name = vehicle.string("name") ?: return
+    private fun onVehicle(vehicle: Observed) {
+        val name = vehicle.name ?: return
         // Left out as unchanged (the subscription asks for that), the resources are the ones the vehicle held before.
-        val held = if ("allocatedResources" in vehicle) vehicle.heldResources() else fleet.held(name)
-        fleet.vehicle(FleetConflicts.Standing(name, held, vehicle.string("currentPosition")))
+        val held = if (vehicle.allocatedResources != null) vehicle.heldResources() else fleet.held(name)
+        fleet.vehicle(FleetConflicts.Standing(name, held, vehicle.currentPosition))
     }
 
-    private fun JsonObject.heldResources(): Set<String> = array("allocatedResources")
-        .flatMap { (it as? JsonArray).orEmpty() }
-        .mapNotNull { (it as? JsonPrimitive)?.content }
-        .toSet()
+    private fun Observed.heldResources(): Set<String> = allocatedResources.orEmpty().flatten().toSet()
 
-    private fun count(message: JsonObject, chars: Int) = synchronized(lock) {
-        if (message.string("type") != "event") return
-        eventCounts.merge(message.string("topic") ?: "?", 1, Int::plus)
+    private fun count(message: WatchedMessage, chars: Int) = synchronized(lock) {
+        if (message.type != "event") return
+        eventCounts.merge(message.topic ?: "?", 1, Int::plus)
         eventChars += chars
     }
 
-    private fun JsonObject.isDeadlock(): Boolean =
-        string("text")?.startsWith("deadlock") == true || string("source")?.contains("deadlock") == true
+    private fun Observed.isDeadlock(): Boolean =
+        text?.startsWith("deadlock") == true || source?.contains("deadlock") == true
 
     private inner class Listener : WebSocket.Listener {
         override fun onText(webSocket: WebSocket, data: CharSequence, last: Boolean): CompletionStage<*>? {
@@ -137,7 +125,7 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
             if (last) {
                 val message = text.toString()
                 text.setLength(0)
-                runCatching { Json.parseToJsonElement(message).jsonObject }.getOrNull()?.let {
+                WatchedMessage.parse(message)?.let {
                     count(it, message.length)
                     onMessage(it)
                 }

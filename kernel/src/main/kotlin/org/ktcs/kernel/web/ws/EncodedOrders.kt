@@ -39,15 +39,14 @@ internal object EncodedOrders {
     }
 
     /** An order's JSON with its routes' marks ([text]), and the routes' bytes in order. */
-    class Marked(private val text: ByteArray, private val routes: List<ByteArray>) {
-        /** The whole order. */
-        val full: ByteArray by lazy { splice(text, routes) }
+    class Marked(private val text: ByteArray, private val routes: List<ByteArray>) : MarkedJson {
+        override val full: ByteArray by lazy { splice(text, routes) }
 
         /**
          * The order without its top-level [fields]: cut from the marked text, which is short, so that a client that
          * has the routes does not cost a scan over them.
          */
-        fun without(fields: List<String>): ByteArray =
+        override fun without(fields: List<String>): ByteArray =
             splice(withoutFields(text, fields), if ("driveOrders" in fields) emptyList() else routes)
     }
 

@@ -44,24 +44,66 @@ internal object Unchanged {
  * [json], a JSON object as UTF-8 (as kotlinx writes it: no whitespace), without its top-level fields named in [names].
  * A scan over the bytes, far cheaper than parsing: the object's states are at hand only as bytes.
  */
-internal fun withoutFields(json: ByteArray, names: Collection<String>): ByteArray {
-    if (names.isEmpty()) return json
-    val keys = names.map { utf8("\"$it\":") }
-    val out = ByteArray(json.size)
-    out[0] = json[0]
-    var length = 1
+internal fun withoutFields(json: ByteArray, names: Collection<String>): ByteArray =
+    if (names.isEmpty()) json else rewriteFields(json, names)
+
+/**
+ * [json] (as for [withoutFields]) without its top-level fields named in [omit], and with the values of those named in
+ * [replace] replaced by what their functions give (asked only for fields that are there and not omitted): in one pass
+ * over the bytes, so that an encoder can leave large values out of the object it encodes and put their own bytes in.
+ */
+internal fun rewriteFields(
+    json: ByteArray,
+    omit: Collection<String>,
+    replace: Map<String, () -> ByteArray> = emptyMap(),
+): ByteArray {
+    val omitted = omit.map { utf8("\"$it\":") }
+    val replaced = replace.map { (name, value) -> utf8("\"$name\":") to value }
+    val out = GrowingBytes(json.size)
+    out.add(json[0])
     var at = 1
     while (at < json.size && json[at] != CLOSE_BRACE) {
-        val end = endOfValue(json, endOfString(json, at) + 1)
-        if (keys.none { startsWith(json, at, it) }) {
-            if (length > 1) out[length++] = COMMA
-            json.copyInto(out, length, at, end)
-            length += end - at
+        val valueAt = endOfString(json, at) + 1
+        val end = endOfValue(json, valueAt)
+        if (omitted.none { startsWith(json, at, it) }) {
+            if (out.size > 1) out.add(COMMA)
+            val value = replaced.firstOrNull { startsWith(json, at, it.first) }?.second
+            if (value == null) {
+                out.add(json, at, end)
+            } else {
+                out.add(json, at, valueAt)
+                val bytes = value()
+                out.add(bytes, 0, bytes.size)
+            }
         }
         at = if (end < json.size && json[end] == COMMA) end + 1 else end
     }
-    out[length++] = CLOSE_BRACE
-    return out.copyOf(length)
+    out.add(CLOSE_BRACE)
+    return out.toByteArray()
+}
+
+/** Bytes appended to a buffer that grows as needed. */
+private class GrowingBytes(capacity: Int) {
+    private var bytes = ByteArray(maxOf(capacity, 2))
+    var size = 0
+        private set
+
+    fun add(byte: Byte) {
+        ensure(1)
+        bytes[size++] = byte
+    }
+
+    fun add(from: ByteArray, start: Int, end: Int) {
+        ensure(end - start)
+        from.copyInto(bytes, size, start, end)
+        size += end - start
+    }
+
+    fun toByteArray(): ByteArray = bytes.copyOf(size)
+
+    private fun ensure(more: Int) {
+        if (size + more > bytes.size) bytes = bytes.copyOf(maxOf(bytes.size * 2, size + more))
+    }
 }
 
 private const val QUOTE = '"'.code.toByte()
@@ -72,7 +114,7 @@ private const val CLOSE_BRACE = '}'.code.toByte()
 private const val OPEN_BRACKET = '['.code.toByte()
 private const val CLOSE_BRACKET = ']'.code.toByte()
 
-private fun startsWith(json: ByteArray, at: Int, prefix: ByteArray): Boolean {
+internal fun startsWith(json: ByteArray, at: Int, prefix: ByteArray): Boolean {
     if (at + prefix.size > json.size) return false
     for (i in prefix.indices) if (json[at + i] != prefix[i]) return false
     return true

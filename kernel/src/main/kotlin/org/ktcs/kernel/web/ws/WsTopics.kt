@@ -61,18 +61,9 @@ internal object WsTopics {
      * [encoded] keeps the last encoded states of vehicles and orders, which are the next events' previous states.
      */
     fun change(event: KernelEvent, encoded: EncodedObjects = EncodedObjects()): Change? = when (event) {
-        is VehicleEvent -> Change.of(WsTopic.VEHICLES, event, encoded::vehicle)
+        is VehicleEvent -> Change.ofMarked(WsTopic.VEHICLES, event, encoded::vehicle)
 
-        is TransportOrderEvent -> {
-            val current by lazy(LazyThreadSafetyMode.NONE) { event.current?.let(encoded::order) }
-            Change(
-                WsTopic.TRANSPORT_ORDERS,
-                { event.previous?.let { encoded.order(it).full } },
-                { current?.full },
-                removed = event.current == null,
-                currentWithout = { fields -> current!!.without(fields) },
-            )
-        }
+        is TransportOrderEvent -> Change.ofMarked(WsTopic.TRANSPORT_ORDERS, event, encoded::order)
 
         is OrderSequenceEvent -> Change.of(WsTopic.ORDER_SEQUENCES, event) { utf8(json.encodeToString(it.toSseDto())) }
 
@@ -97,13 +88,13 @@ internal fun utf8(text: String): ByteArray = text.toByteArray(Charsets.UTF_8)
 
 /** The [LastEncoded] vehicles and transport orders that every WebSocket session of a server shares. */
 internal class EncodedObjects(capacity: Int = DEFAULT_CAPACITY) {
-    private val vehicles =
-        LastEncoded<Vehicle, ByteArray>(capacity) { utf8(V1Json.json.encodeToString(it.toSseDto())) }
-    private val orders = LastEncoded<TransportOrder, EncodedOrders.Marked>(capacity, EncodedOrders::marked)
+    private val vehicleParts = EncodedVehicles(capacity)
+    private val vehicles = LastEncoded<Vehicle, MarkedJson>(capacity, vehicleParts::marked)
+    private val orders = LastEncoded<TransportOrder, MarkedJson>(capacity, EncodedOrders::marked)
 
-    fun vehicle(vehicle: Vehicle): ByteArray = vehicles.of(vehicle.name, vehicle)
+    fun vehicle(vehicle: Vehicle): MarkedJson = vehicles.of(vehicle.name, vehicle)
 
-    fun order(order: TransportOrder): EncodedOrders.Marked = orders.of(order.name, order)
+    fun order(order: TransportOrder): MarkedJson = orders.of(order.name, order)
 
     private companion object {
         const val DEFAULT_CAPACITY = 512
@@ -157,6 +148,18 @@ internal class Change(
         private val EMPTY = ByteArray(0)
         private val CURRENT = utf8(""","current":""")
         private val TAIL = utf8(""","v":$WS_PROTOCOL_VERSION}""")
+
+        /** A change whose states [encode] makes, from which a session cuts fields without encoding them. */
+        fun <T : Any> ofMarked(topic: WsTopic, event: ObjectEvent<T>, encode: (T) -> MarkedJson): Change {
+            val current by lazy(LazyThreadSafetyMode.NONE) { event.current?.let(encode) }
+            return Change(
+                topic,
+                { event.previous?.let { encode(it).full } },
+                { current?.full },
+                removed = event.current == null,
+                currentWithout = { fields -> current!!.without(fields) },
+            )
+        }
 
         fun <T : Any> of(topic: WsTopic, event: ObjectEvent<T>, encode: (T) -> ByteArray) = Change(
             topic,

@@ -75,8 +75,11 @@ data class SseVehicleLayoutDto(val routeColor: SseColorDto)
 @Serializable
 data class SseColorDto(val red: Int, val green: Int, val blue: Int)
 
-/** kTCS keeps no history for vehicles, so it is always empty. */
-fun Vehicle.toSseDto(): SseVehicleDto = SseVehicleDto(
+/**
+ * kTCS keeps no history for vehicles, so it is always empty. Without [withResources], the claimed and allocated
+ * resources are empty lists, for an encoder that adds them itself.
+ */
+fun Vehicle.toSseDto(withResources: Boolean = true): SseVehicleDto = SseVehicleDto(
     name = name,
     properties = properties,
     history = emptyList<HistoryEntry>().toDto(),
@@ -96,8 +99,8 @@ fun Vehicle.toSseDto(): SseVehicleDto = SseVehicleDto(
     transportOrder = transportOrder,
     orderSequence = orderSequence,
     acceptableOrderTypes = acceptableOrderTypes.map { it.toDto() },
-    claimedResources = claimedResources.map { it.toList() },
-    allocatedResources = allocatedResources.map { it.toList() },
+    claimedResources = if (withResources) claimedResources.map { it.toList() } else emptyList(),
+    allocatedResources = if (withResources) allocatedResources.map { it.toList() } else emptyList(),
     currentPosition = currentPosition,
     pose = SsePoseDto(precisePosition?.toDto(), orientationAngle),
     envelopeKey = envelopeKey,

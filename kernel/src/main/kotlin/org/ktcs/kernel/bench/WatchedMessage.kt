@@ -1,0 +1,40 @@
+package org.ktcs.kernel.bench
+
+import kotlinx.serialization.Serializable
+import kotlinx.serialization.json.Json
+import kotlinx.serialization.json.JsonElement
+
+/**
+ * A message of kTCS's WebSocket with only the fields the bench reads: decoding into these skips the rest of each
+ * object without building a tree of it, which keeps the bench's share of the machine it shares with kTCS small.
+ */
+@Serializable
+internal class WatchedMessage(
+    val type: String? = null,
+    val topic: String? = null,
+    val objects: List<Observed> = emptyList(),
+    val previous: Observed? = null,
+    val current: Observed? = null,
+) {
+    /**
+     * A vehicle, order or notification: `state` is a vehicle's object or an order's string; `allocatedResources` is
+     * `null` where an event left them out as unchanged.
+     */
+    @Serializable
+    class Observed(
+        val name: String? = null,
+        val state: JsonElement? = null,
+        val currentPosition: String? = null,
+        val allocatedResources: List<List<String>>? = null,
+        val text: String? = null,
+        val source: String? = null,
+    )
+
+    companion object {
+        private val json = Json { ignoreUnknownKeys = true }
+
+        /** [text] as a message, or `null` if it is none. */
+        fun parse(text: String): WatchedMessage? =
+            runCatching { json.decodeFromString(serializer(), text) }.getOrNull()
+    }
+}

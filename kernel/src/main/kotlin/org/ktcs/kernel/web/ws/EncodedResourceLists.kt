@@ -1,0 +1,67 @@
+package org.ktcs.kernel.web.ws
+
+import kotlinx.serialization.builtins.SetSerializer
+import kotlinx.serialization.builtins.serializer
+import org.ktcs.kernel.web.v1.V1Json
+
+/**
+ * Vehicles' resource lists (claimed or allocated, per movement step) as JSON, the last one of each of the [capacity]
+ * most recently changed vehicles kept. A driving vehicle's claimed list loses its first step at every allocation and
+ * is otherwise the same steps (the same sets), so a list that is the end of the one encoded last is cut from its bytes
+ * rather than encoded again: an event then costs a copy, not the route's length in JSON encoding. Safe to use from
+ * several threads.
+ */
+internal class EncodedResourceLists(private val capacity: Int) {
+    private val last = object : LinkedHashMap<String, Encoded>(16, 0.75f, true) {
+        override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, Encoded>) = size > capacity
+    }
+
+    /** [list], the list of the vehicle named [name], as a JSON array of arrays of names. */
+    fun of(name: String, list: List<Set<String>>): ByteArray {
+        if (list.isEmpty()) return EMPTY
+        val before = synchronized(last) { last[name] }
+        if (before != null) before.endOf(list)?.let { return it }
+        val encoded = encode(list)
+        synchronized(last) { last[name] = encoded }
+        return encoded.bytes
+    }
+
+    /** A list's JSON, and where each of its elements starts in it. */
+    private class Encoded(val list: List<Set<String>>, val bytes: ByteArray, val starts: IntArray) {
+        /** [other]'s JSON if it is this list or its end (the same sets, by identity), else `null`. */
+        fun endOf(other: List<Set<String>>): ByteArray? {
+            if (other === list) return bytes
+            val skipped = list.size - other.size
+            if (skipped < 0) return null
+            for (i in other.indices) if (other[i] !== list[skipped + i]) return null
+            val from = starts[skipped]
+            val out = ByteArray(1 + bytes.size - from)
+            out[0] = OPEN
+            bytes.copyInto(out, 1, from)
+            return out
+        }
+    }
+
+    private companion object {
+        val EMPTY = utf8("[]")
+        const val OPEN = '['.code.toByte()
+        const val COMMA = ','.code.toByte()
+        const val CLOSE = ']'.code.toByte()
+        val STEP = SetSerializer(String.serializer())
+
+        fun encode(list: List<Set<String>>): Encoded {
+            val steps = list.map { utf8(V1Json.json.encodeToString(STEP, it)) }
+            val bytes = ByteArray(steps.sumOf { it.size } + steps.size + 1)
+            val starts = IntArray(steps.size)
+            var at = 0
+            steps.forEachIndexed { index, step ->
+                bytes[at++] = if (index == 0) OPEN else COMMA
+                starts[index] = at
+                step.copyInto(bytes, at)
+                at += step.size
+            }
+            bytes[at] = CLOSE
+            return Encoded(list, bytes, starts)
+        }
+    }
+}

@@ -1,0 +1,67 @@
+package org.ktcs.kernel.bench
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.nulls.shouldBeNull
+import io.kotest.matchers.shouldBe
+import kotlinx.serialization.json.jsonPrimitive
+import org.ktcs.api.event.KernelEvent
+import org.ktcs.api.event.TransportOrderEvent
+import org.ktcs.api.event.VehicleEvent
+import org.ktcs.api.model.Vehicle
+import org.ktcs.api.order.TransportOrder
+import org.ktcs.api.order.TransportOrderState
+import org.ktcs.kernel.web.ws.Unchanged
+import org.ktcs.kernel.web.ws.WsTopics
+import java.time.Instant
+
+class WatchedMessageTest : FunSpec({
+    fun sent(event: KernelEvent, omitUnchanged: Boolean): WatchedMessage {
+        val unchanged = if (omitUnchanged) Unchanged.fieldsOf(event) else emptyList()
+        val bytes = WsTopics.change(event)!!.eventBytes(1, withPrevious = false, unchanged = unchanged)
+        return WatchedMessage.parse(bytes.decodeToString())!!
+    }
+
+    test("the bench reads a vehicle's name, point and allocations from the events kTCS sends") {
+        val driving = Vehicle(
+            "Vehicle-01",
+            currentPosition = "Point-1",
+            allocatedResources = listOf(setOf("Point-1"), setOf("Point-1 --- Point-2", "Point-2")),
+            claimedResources = listOf(setOf("Point-2 --- Point-3", "Point-3")),
+        )
+
+        val message = sent(VehicleEvent(null, driving), omitUnchanged = true)
+
+        message.type shouldBe "event"
+        message.topic shouldBe "vehicles"
+        message.current!!.name shouldBe "Vehicle-01"
+        message.current!!.currentPosition shouldBe "Point-1"
+        message.current!!.allocatedResources shouldBe
+            listOf(listOf("Point-1"), listOf("Point-1 --- Point-2", "Point-2"))
+    }
+
+    test("allocations left out as unchanged read as not sent, not as none") {
+        val driving = Vehicle("Vehicle-01", currentPosition = "Point-1", allocatedResources = listOf(setOf("Point-1")))
+
+        val moved = sent(VehicleEvent(driving, driving.copy(currentPosition = null)), omitUnchanged = true)
+        val released = sent(VehicleEvent(driving, driving.copy(allocatedResources = emptyList())), omitUnchanged = true)
+
+        moved.current!!.allocatedResources.shouldBeNull()
+        moved.current!!.currentPosition.shouldBeNull()
+        released.current!!.allocatedResources shouldBe emptyList()
+    }
+
+    test("an order's state is read as its name, and text that is no message as none") {
+        val order = TransportOrder(
+            "TOrder-01",
+            emptyList(),
+            state = TransportOrderState.BEING_PROCESSED,
+            creationTime = Instant.EPOCH,
+        )
+
+        val message = sent(TransportOrderEvent(null, order), omitUnchanged = false)
+
+        message.current!!.name shouldBe "TOrder-01"
+        message.current!!.state!!.jsonPrimitive.content shouldBe "BEING_PROCESSED"
+        WatchedMessage.parse("{\"type\":").shouldBeNull()
+    }
+})
