@@ -60,6 +60,7 @@ class BenchTest : FunSpec({
                 "assign_latency_p50_ms",
                 "assign_latency_p99_ms",
                 "deadlock_notifications",
+                "idle_vehicle_notifications",
             )
         }
     }

@@ -47,6 +47,7 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
             figures.record("assign_latency_p50_ms", quantile(latencies, MEDIAN))
             figures.record("assign_latency_p99_ms", quantile(latencies, P99))
             figures.record("deadlock_notifications", watcher.deadlockNotifications().toDouble())
+            figures.record("idle_vehicle_notifications", watcher.idleVehicleNotifications().toDouble())
             figures.record("double_allocations", watcher.doubleAllocations().toDouble())
             figures.record("shared_positions", watcher.sharedPositions().toDouble())
             figures.record("event_stream_missed", watcher.missedEvents().toDouble())

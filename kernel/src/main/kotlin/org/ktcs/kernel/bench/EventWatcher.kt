@@ -19,6 +19,7 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
     private val assignLatencies = ArrayList<Double>()
     private val fleet = FleetConflicts()
     private var deadlocks = 0
+    private var idleVehiclesMoved = 0
     private var missed = 0
     private val eventCounts = HashMap<String, Int>()
     private var eventChars = 0L
@@ -39,7 +40,14 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
 
     fun sharedPositions(): Int = synchronized(lock) { fleet.sharedPositions() }
 
+    /** Notifications of deadlocks: vehicles that waited for each other, found by the watchdog. */
     fun deadlockNotifications(): Int = synchronized(lock) { deadlocks }
+
+    /**
+     * The watchdog's other notifications: an idle vehicle in another's way sent off it. No deadlock (the idle vehicle
+     * waits for nothing), but the watchdog acting all the same.
+     */
+    fun idleVehicleNotifications(): Int = synchronized(lock) { idleVehiclesMoved }
 
     /** How often kTCS said the bench fell behind and sent fresh snapshots (latencies of those moments are lost). */
     fun missedEvents(): Int = synchronized(lock) { missed }
@@ -81,7 +89,7 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
         when (topic) {
             "transportOrders" -> current?.let(::onOrder)
             "vehicles" -> current?.let(::onVehicle)
-            "notifications" -> if (previous == null && current?.isDeadlock() == true) deadlocks++
+            "notifications" -> if (previous == null && current != null) onNotification(current)
         }
     }
 
@@ -116,8 +124,12 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
         eventChars += chars
     }
 
-    private fun Observed.isDeadlock(): Boolean =
-        text?.startsWith("deadlock") == true || source?.contains("deadlock") == true
+    private fun onNotification(notification: Observed) {
+        when {
+            notification.isDeadlock -> deadlocks++
+            notification.isIdleVehicleMoved -> idleVehiclesMoved++
+        }
+    }
 
     private inner class Listener : WebSocket.Listener {
         override fun onText(webSocket: WebSocket, data: CharSequence, last: Boolean): CompletionStage<*>? {

@@ -28,7 +28,13 @@ internal class WatchedMessage(
         val allocatedResources: List<List<String>>? = null,
         val text: String? = null,
         val source: String? = null,
-    )
+    ) {
+        /** A notification of a deadlock the watchdog found. */
+        val isDeadlock: Boolean get() = text?.startsWith("deadlock") == true
+
+        /** A notification of the watchdog's that is no deadlock: an idle vehicle in another's way was sent off it. */
+        val isIdleVehicleMoved: Boolean get() = !isDeadlock && source == "deadlock watchdog"
+    }
 
     companion object {
         private val json = Json { ignoreUnknownKeys = true }

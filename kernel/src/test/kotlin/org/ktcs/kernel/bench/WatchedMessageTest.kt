@@ -5,7 +5,10 @@ import io.kotest.matchers.nulls.shouldBeNull
 import io.kotest.matchers.shouldBe
 import kotlinx.serialization.json.jsonPrimitive
 import org.ktcs.api.event.KernelEvent
+import org.ktcs.api.event.NotificationLevel
 import org.ktcs.api.event.TransportOrderEvent
+import org.ktcs.api.event.UserNotification
+import org.ktcs.api.event.UserNotificationEvent
 import org.ktcs.api.event.VehicleEvent
 import org.ktcs.api.model.Vehicle
 import org.ktcs.api.order.TransportOrder
@@ -63,5 +66,24 @@ class WatchedMessageTest : FunSpec({
         message.current!!.name shouldBe "TOrder-01"
         message.current!!.state!!.jsonPrimitive.content shouldBe "BEING_PROCESSED"
         WatchedMessage.parse("{\"type\":").shouldBeNull()
+    }
+
+    test("the watchdog's deadlock notifications are told apart from its moves of idle vehicles") {
+        fun notification(source: String, text: String) = sent(
+            UserNotificationEvent(UserNotification(source, text, NotificationLevel.IMPORTANT, Instant.EPOCH)),
+            omitUnchanged = true,
+        ).current!!
+        val deadlock = notification(
+            "deadlock watchdog",
+            "deadlock: vehicles V1 -> V2 wait for each other; contested resources P1, P2",
+        )
+        val moved = notification(
+            "deadlock watchdog",
+            "vehicle V3 stood idle in the way of V1 at P7; sent to Park-01 with order Clear-01",
+        )
+        val other = notification("kernel", "vehicle V1 is paused")
+
+        listOf(deadlock, moved, other).map { it.isDeadlock to it.isIdleVehicleMoved } shouldBe
+            listOf(true to false, false to true, false to false)
     }
 })
