@@ -54,9 +54,11 @@ internal class WaitingReasons(
     }
 
     private fun describeFleet(vehicles: List<Vehicle>): String {
-        val busy = vehicles.filter(::isBusy)
-        if (busy.size == vehicles.size) return "every vehicle is busy with an order: ${names(busy)}"
-        val others = vehicles.filterNot { it in busy }.map(::refusal)
+        // Split in one pass: asking a list of busy vehicles whether it holds each vehicle compared whole vehicles,
+        // fleet times fleet, at every dispatcher run.
+        val (busy, free) = vehicles.partition(::isBusy)
+        if (free.isEmpty()) return "every vehicle is busy with an order: ${names(busy)}"
+        val others = free.map(::refusal)
         val busyPart = if (busy.isEmpty()) emptyList() else listOf("busy with an order: ${names(busy)}")
         return (busyPart + describe(others)).joinToString("; ")
     }
