@@ -2,11 +2,15 @@ package org.ktcs.kernel.web.ws
 
 import kotlinx.serialization.ExperimentalSerializationApi
 import kotlinx.serialization.json.JsonUnquotedLiteral
+import org.ktcs.api.order.HistoryEntry
 import org.ktcs.api.order.TransportOrder
+import org.ktcs.kernel.web.LastEncoded
+import org.ktcs.kernel.web.v1.ObjectHistoryDto
 import org.ktcs.kernel.web.v1.V1Json
 import org.ktcs.kernel.web.v1.events.EncodedRoutes
 import org.ktcs.kernel.web.v1.events.SseTransportOrderDto
 import org.ktcs.kernel.web.v1.events.toSseDto
+import org.ktcs.kernel.web.v1.toDto
 
 /**
  * A transport order's event state as UTF-8 JSON, its routes spliced in as bytes: the order is encoded with a mark
@@ -15,18 +19,29 @@ import org.ktcs.kernel.web.v1.events.toSseDto
  * nor copied character by character again at every step.
  */
 internal object EncodedOrders {
+    private const val HISTORY_CAPACITY = 512
+
     // A raw control character cannot occur in JSON that kotlinx writes (it escapes them in strings): a safe mark.
     private const val MARK: Byte = 1
 
     @OptIn(ExperimentalSerializationApi::class)
     private val markLiteral = JsonUnquotedLiteral("\u0001")
 
+    // The history of the orders that changed last, by identity: an order advancing a step keeps its history, which a
+    // client that has it is not sent (`omitUnchanged`), so it is encoded only when it changed and somebody takes it.
+    private val histories = LastEncoded<List<HistoryEntry>, ByteArray>(HISTORY_CAPACITY) {
+        utf8(V1Json.json.encodeToString(ObjectHistoryDto.serializer(), it.toDto()))
+    }
+
     fun utf8(order: TransportOrder): ByteArray = marked(order).full
 
-    /** [order] encoded with a mark where each route goes, and the routes: spliced together only when needed. */
+    /**
+     * [order] encoded with a mark where each route goes and its history left empty, with the routes and the history:
+     * put together only when needed.
+     */
     fun marked(order: TransportOrder): Marked {
         val routes = order.driveOrders.map { EncodedRoutes.utf8Of("${order.name}/${it.name}", it.route) }
-        val dto = order.toSseDto()
+        val dto = order.toSseDto(withHistory = false)
         val marked = dto.copy(
             driveOrders = dto.driveOrders.mapIndexed { index, driveOrder ->
                 if (routes[index] == null) driveOrder else driveOrder.copy(route = markLiteral)
@@ -35,19 +50,26 @@ internal object EncodedOrders {
         return Marked(
             utf8(V1Json.json.encodeToString(SseTransportOrderDto.serializer(), marked)),
             routes.filterNotNull(),
+            lazy { histories.of(order.name, order.history) },
         )
     }
 
-    /** An order's JSON with its routes' marks ([text]), and the routes' bytes in order. */
-    class Marked(private val text: ByteArray, private val routes: List<ByteArray>) : MarkedJson {
-        override val full: ByteArray by lazy { splice(text, routes) }
+    /** An order's JSON with its routes' marks and an empty history ([text]), the routes' bytes and the history's. */
+    class Marked(
+        private val text: ByteArray,
+        private val routes: List<ByteArray>,
+        historyBytes: Lazy<ByteArray>,
+    ) : MarkedJson {
+        private val history = mapOf("history" to historyBytes::value)
+
+        override val full: ByteArray by lazy { splice(rewriteFields(text, emptyList(), history), routes) }
 
         /**
          * The order without its top-level [fields]: cut from the marked text, which is short, so that a client that
          * has the routes does not cost a scan over them.
          */
         override fun without(fields: List<String>): ByteArray =
-            splice(withoutFields(text, fields), if ("driveOrders" in fields) emptyList() else routes)
+            splice(rewriteFields(text, fields, history), if ("driveOrders" in fields) emptyList() else routes)
     }
 
     /** [text] with each [MARK] replaced by the next of [routes]. */

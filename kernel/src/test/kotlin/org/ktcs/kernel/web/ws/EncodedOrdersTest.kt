@@ -8,6 +8,7 @@ import kotlinx.serialization.json.JsonObject
 import kotlinx.serialization.json.jsonObject
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.DriveOrder
+import org.ktcs.api.order.HistoryEntry
 import org.ktcs.api.order.Route
 import org.ktcs.api.order.Step
 import org.ktcs.api.order.TransportOrder
@@ -30,12 +31,38 @@ class EncodedOrdersTest : FunSpec({
             ),
             properties = mapOf("Kunde" to "Müller \u0001"),
             creationTime = Instant.EPOCH,
+            history = listOf(
+                HistoryEntry(Instant.EPOCH, "erstellt", "über \"API\""),
+                HistoryEntry(Instant.MAX, "fertig"),
+            ),
         )
 
         val spliced = EncodedOrders.utf8(order).decodeToString()
 
         Json.parseToJsonElement(spliced) shouldBe
             Json.parseToJsonElement(V1Json.json.encodeToString(SseTransportOrderDto.serializer(), order.toSseDto()))
+    }
+
+    test("an order's history goes in only where it is sent, and as it is now after it changed") {
+        val order = TransportOrder(
+            name = "T1",
+            driveOrders = listOf(DriveOrder("D1", Destination("L1", "Load cargo"))),
+            creationTime = Instant.EPOCH,
+            history = listOf(HistoryEntry(Instant.EPOCH, "created")),
+        )
+        val advanced = order.copy(currentRouteStepIndex = 2, history = order.history + HistoryEntry(Instant.EPOCH, "x"))
+        fun serialized(order: TransportOrder) = Json.parseToJsonElement(
+            V1Json.json.encodeToString(SseTransportOrderDto.serializer(), order.toSseDto()),
+        ).jsonObject
+
+        val first = EncodedOrders.marked(order)
+        val second = EncodedOrders.marked(advanced)
+
+        Json.parseToJsonElement(first.full.decodeToString()) shouldBe serialized(order)
+        Json.parseToJsonElement(second.full.decodeToString()) shouldBe serialized(advanced)
+        second.without(listOf("history")).decodeToString() shouldNotContain "created"
+        Json.parseToJsonElement(second.without(listOf("history")).decodeToString()) shouldBe
+            JsonObject(serialized(advanced) - "history")
     }
 
     test("an order without some fields is cut from the marked text: its routes go in only with its drive orders") {

@@ -52,10 +52,11 @@ data class SseDriveOrderDto(
 @Serializable
 data class SseDestinationDto(val destination: String, val operation: String, val properties: Map<String, String>)
 
-fun TransportOrder.toSseDto(): SseTransportOrderDto = SseTransportOrderDto(
+/** Without [withHistory], the history has no entries, for an encoder that adds them itself. */
+fun TransportOrder.toSseDto(withHistory: Boolean = true): SseTransportOrderDto = SseTransportOrderDto(
     name = name,
     properties = properties,
-    history = history.toDto(),
+    history = if (withHistory) history.toDto() else NO_HISTORY,
     type = type,
     dependencies = dependencies.toList(),
     driveOrders = driveOrders.map { it.toSseDto(name) },
@@ -80,3 +81,5 @@ private fun DriveOrder.toSseDto(order: String) = SseDriveOrderDto(
     route = EncodedRoutes.of("$order/$name", route),
     state = state.name,
 )
+
+private val NO_HISTORY = ObjectHistoryDto(emptyList())
