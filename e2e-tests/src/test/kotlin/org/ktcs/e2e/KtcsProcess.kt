@@ -14,6 +14,7 @@ import kotlin.time.Duration.Companion.seconds
  * Collects the merged output line by line.
  */
 class KtcsProcess(vararg args: String, workingDirectory: Path = RepositoryRoot.path) : AutoCloseable {
+    private val dataDirectory: Path = Files.createTempDirectory("ktcs-e2e-data")
     private val process: Process =
         ProcessBuilder(listOf(RepositoryRoot.path.resolve("ktcs").toString(), "--no-build") + args)
             .directory(workingDirectory.toFile())
@@ -23,8 +24,7 @@ class KtcsProcess(vararg args: String, workingDirectory: Path = RepositoryRoot.p
             // asks for it with --set.
             .also {
                 it.environment()["KTCS_PERSISTENCE_DURABILITY"] = "OFF"
-                it.environment()["KTCS_KERNEL_DATADIRECTORY"] =
-                    Files.createTempDirectory("ktcs-e2e-data").toString()
+                it.environment()["KTCS_KERNEL_DATADIRECTORY"] = dataDirectory.toString()
             }
             .start()
     private val lines = LinkedBlockingQueue<String>()
@@ -79,5 +79,7 @@ class KtcsProcess(vararg args: String, workingDirectory: Path = RepositoryRoot.p
 
     override fun close() {
         process.destroyForcibly()
+        process.waitFor(30, TimeUnit.SECONDS)
+        dataDirectory.toFile().deleteRecursively()
     }
 }

@@ -1,6 +1,7 @@
 package org.ktcs.e2e
 
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.engine.spec.tempfile
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.collections.shouldContainAll
 import io.kotest.matchers.collections.shouldHaveSize
@@ -108,7 +109,7 @@ class LauncherTest : FunSpec({
     }
 
     test("loads a model given with --model") {
-        val model = Files.createTempFile("plant", ".xml")
+        val model = tempfile("plant", ".xml").toPath()
         Files.writeString(model, TINY_MODEL)
         KtcsProcess("--model", model.toString(), *local).use { ktcs ->
             ktcs.awaitLine("kTCS ready") shouldContain "model 'Tiny' from $model (points=2 paths=1"
@@ -117,7 +118,7 @@ class LauncherTest : FunSpec({
     }
 
     test("a broken model exits non-zero with a one-line error") {
-        val model = Files.createTempFile("broken", ".xml")
+        val model = tempfile("broken", ".xml").toPath()
         Files.writeString(model, TINY_MODEL.replace("destinationPoint=\"B\"", "destinationPoint=\"Nowhere\""))
         KtcsProcess("--model", model.toString(), *local).use { ktcs ->
             ktcs.awaitExit() shouldBe 1
@@ -162,7 +163,7 @@ class LauncherTest : FunSpec({
     }
 
     test("model check prints the summary of a valid model") {
-        val model = Files.createTempFile("plant", ".xml")
+        val model = tempfile("plant", ".xml").toPath()
         Files.writeString(model, TINY_MODEL)
         KtcsProcess("model", "check", model.toString()).use { ktcs ->
             ktcs.awaitExit() shouldBe 0

@@ -2,6 +2,7 @@ package org.ktcs.xmlchannels
 
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.engine.spec.tempdir
 import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldEndWith
@@ -30,7 +31,7 @@ class XmlChannelsExtensionTest : FunSpec({
 
     test("the channels listen as soon as the kernel's Koin application exists, and stop when it closes") {
         val services = FakeKernelServices()
-        val scripts = Files.createTempDirectory("ktcs-scripts")
+        val scripts = tempdir("ktcs-scripts").toPath()
         val app = koinApplication {
             modules(module { single<KernelServices> { services } }, xmlChannelsModule { testSettings(scripts) })
         }

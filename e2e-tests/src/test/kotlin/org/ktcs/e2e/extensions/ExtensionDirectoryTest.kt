@@ -1,6 +1,7 @@
 package org.ktcs.e2e.extensions
 
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.engine.spec.tempdir
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.string.shouldNotContain
@@ -21,7 +22,7 @@ class ExtensionDirectoryTest : FunSpec({
     )
 
     test("an extension whose definition fails at start is named with its jar, exit 1, nothing served") {
-        val extensions = Files.createTempDirectory("ktcs-extensions")
+        val extensions = tempdir("ktcs-extensions").toPath()
         val jar = extensions.resolve("broken-dispatcher.jar")
         writeJar(jar, BrokenDispatcherExtension::class.java)
         ktcs(extensions).use { ktcs ->
@@ -34,7 +35,7 @@ class ExtensionDirectoryTest : FunSpec({
     }
 
     test("an extension jar declares settings of its own, set like kTCS's; an undeclared key is still refused") {
-        val extensions = Files.createTempDirectory("ktcs-extensions")
+        val extensions = tempdir("ktcs-extensions").toPath()
         writeJar(extensions.resolve("greeting.jar"), GreetingExtension::class.java)
         KtcsProcess(
             *(local + "extensions.directory=$extensions" + "greeting.text=moin").flatMap { listOf("--set", it) }
@@ -52,7 +53,7 @@ class ExtensionDirectoryTest : FunSpec({
     }
 
     test("a jar listing a class it does not contain is named, exit 1") {
-        val extensions = Files.createTempDirectory("ktcs-extensions")
+        val extensions = tempdir("ktcs-extensions").toPath()
         val jar = extensions.resolve("vendor.jar")
         writeJar(jar, providerName = "com.example.vendor.VendorExtension")
         ktcs(extensions).use { ktcs ->

@@ -1,6 +1,8 @@
 package org.ktcs.kernel.app
 
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.engine.spec.tempdir
+import io.kotest.engine.spec.tempfile
 import io.kotest.matchers.collections.shouldContainAll
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
@@ -22,7 +24,7 @@ class KtcsTest : FunSpec({
         // A kTCS started here keeps nothing and writes no files into the module (state store, log file).
         val scratch = mapOf(
             "KTCS_PERSISTENCE_DURABILITY" to "OFF",
-            "KTCS_KERNEL_DATADIRECTORY" to Files.createTempDirectory("ktcs-test-data").toString(),
+            "KTCS_KERNEL_DATADIRECTORY" to tempdir("ktcs-test-data").toPath().toString(),
         )
         val code = Ktcs(
             PrintStream(out, true),
@@ -50,7 +52,7 @@ class KtcsTest : FunSpec({
         }
 
         test("lists every problem of a broken model and exits 1") {
-            val broken = Files.createTempFile("broken", ".xml")
+            val broken = tempfile("broken", ".xml").toPath()
             Files.writeString(
                 broken,
                 Files.readString(fixture("$samples/opentcs-7.5-head/Demo-01.xml"))
@@ -65,7 +67,7 @@ class KtcsTest : FunSpec({
         }
 
         test("reports malformed XML with file, line and column") {
-            val malformed = Files.createTempFile("malformed", ".xml")
+            val malformed = tempfile("malformed", ".xml").toPath()
             Files.writeString(
                 malformed,
                 "<?xml version=\"1.0\"?>\n<model version=\"7.0.0\" name=\"x\">\n<point name=\"A\"\n</model>",
@@ -77,7 +79,7 @@ class KtcsTest : FunSpec({
     }
 
     test("model convert writes version 7.0.0 of an old model with the same content") {
-        val output = Files.createTempDirectory("convert").resolve("Demo-01-7.xml")
+        val output = tempdir("convert").toPath().resolve("Demo-01-7.xml")
         val input = fixture("$samples/opentcs-5.0/Demo-01.xml")
 
         val run = ktcs("model", "convert", input.toString(), output.toString())
@@ -119,7 +121,7 @@ class KtcsTest : FunSpec({
     }
 
     test("a missing model file is named without a Java exception") {
-        val missing = Files.createTempDirectory("ktcs").resolve("plant.xml")
+        val missing = tempdir("ktcs").toPath().resolve("plant.xml")
         val run = ktcs("--model", missing.toString())
         run.exitCode shouldBe 1
         run.err.trim() shouldBe "ktcs: error: $missing: cannot read the file: no such file"
@@ -139,7 +141,7 @@ class KtcsTest : FunSpec({
     }
 
     test("a configured extensions directory that does not exist stops the start with one line, exit 1") {
-        val missing = Files.createTempDirectory("ktcs").resolve("plugins")
+        val missing = tempdir("ktcs").toPath().resolve("plugins")
         val run = ktcs("--set", "web.port=0", "--set", "extensions.directory=$missing")
         run.exitCode shouldBe 1
         run.err.trim() shouldBe
@@ -147,7 +149,7 @@ class KtcsTest : FunSpec({
     }
 
     test("a broken extension jar stops the start with one line naming it, exit 1") {
-        val extensions = Files.createTempDirectory("ktcs-extensions")
+        val extensions = tempdir("ktcs-extensions").toPath()
         val broken = extensions.resolve("broken.jar")
         Files.writeString(broken, "not a jar")
         val run = ktcs("--set", "web.port=0", "--set", "extensions.directory=$extensions")

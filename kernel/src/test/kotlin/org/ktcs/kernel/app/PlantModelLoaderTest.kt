@@ -3,6 +3,7 @@ package org.ktcs.kernel.app
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.datatest.withData
+import io.kotest.engine.spec.tempfile
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.collections.shouldNotBeEmpty
 import io.kotest.matchers.ints.shouldBeGreaterThanOrEqual
@@ -38,7 +39,7 @@ class PlantModelLoaderTest : FunSpec({
     }
 
     test("a model with errors is refused as a whole") {
-        val broken = Files.createTempFile("broken", ".xml")
+        val broken = tempfile("broken", ".xml").toPath()
         Files.writeString(
             broken,
             PersistenceFixtures.text(

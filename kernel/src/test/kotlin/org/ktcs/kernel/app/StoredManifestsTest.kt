@@ -1,6 +1,7 @@
 package org.ktcs.kernel.app
 
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.engine.spec.tempfile
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.shouldNotBe
 import java.io.ByteArrayOutputStream
@@ -32,7 +33,7 @@ class StoredManifestsTest : FunSpec({
                 zip.closeEntry()
             }
         }
-        return Files.createTempFile("stored-manifests", ".jar").also { Files.write(it, bytes.toByteArray()) }
+        return tempfile("stored-manifests", ".jar").toPath().also { Files.write(it, bytes.toByteArray()) }
     }
 
     fun manifest() = Manifest().apply {

@@ -2,6 +2,7 @@ package org.ktcs.kernel.config
 
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.engine.spec.tempfile
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
 import org.koin.dsl.module
@@ -29,7 +30,7 @@ class ConfigLoaderTest : FunSpec({
     val loader = ConfigLoader(SettingsCatalogue.of(listOf(sample)))
 
     fun configFile(vararg lines: String): Path =
-        Files.createTempFile("ktcs", ".conf").also { Files.write(it, lines.toList()) }
+        tempfile("ktcs", ".conf").toPath().also { Files.write(it, lines.toList()) }
 
     test("every setting has its default when nothing is configured") {
         val config = loader.load(null, emptyMap(), emptyList())

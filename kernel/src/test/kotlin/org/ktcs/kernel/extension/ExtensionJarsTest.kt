@@ -3,6 +3,8 @@ package org.ktcs.kernel.extension
 import com.example.extensions.WorkingExtension
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.engine.spec.tempdir
+import io.kotest.engine.spec.tempfile
 import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.collections.shouldNotContain
 import io.kotest.matchers.string.shouldContain
@@ -27,7 +29,7 @@ class ExtensionJarsTest : FunSpec({
         return jar
     }
 
-    fun directory(): Path = Files.createTempDirectory("ktcs-extensions")
+    fun directory(): Path = tempdir("ktcs-extensions").toPath()
 
     fun names(installed: InstalledExtensions) = installed.extensions.map { it.name }
 
@@ -43,7 +45,7 @@ class ExtensionJarsTest : FunSpec({
     }
 
     test("a file given as the directory is refused") {
-        val file = Files.createTempFile("extensions", ".txt")
+        val file = tempfile("extensions", ".txt").toPath()
         shouldThrow<ExtensionException> { Extensions.load(file, required = true) }.message shouldContain
             "'$file' (extensions.directory) is not a directory"
     }

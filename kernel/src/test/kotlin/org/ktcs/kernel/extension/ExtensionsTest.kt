@@ -3,6 +3,7 @@ package org.ktcs.kernel.extension
 import com.example.extensions.WorkingExtension
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.engine.spec.tempdir
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
@@ -13,7 +14,7 @@ import java.nio.file.Files
 
 class ExtensionsTest : FunSpec({
     fun classLoaderListing(vararg providers: String, serviceFile: String = Extensions.SERVICE_FILE): ClassLoader {
-        val root = Files.createTempDirectory("ktcs-extension")
+        val root = tempdir("ktcs-extension").toPath()
         val services = root.resolve(serviceFile)
         Files.createDirectories(services.parent)
         Files.write(services, providers.toList())

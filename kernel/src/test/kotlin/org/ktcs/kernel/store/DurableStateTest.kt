@@ -2,6 +2,7 @@ package org.ktcs.kernel.store
 
 import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.engine.spec.tempdir
 import io.kotest.matchers.collections.shouldContain
 import io.kotest.matchers.collections.shouldNotContain
 import io.kotest.matchers.ints.shouldBeLessThanOrEqual
@@ -32,9 +33,9 @@ private fun order(name: String, incomplete: Boolean = false, sequence: String? =
     properties = mapOf("customer" to "K-42"),
 )
 
-private fun tempStore(): Path = Files.createTempDirectory("ktcs-store-test")
-
 class DurableStateTest : FunSpec({
+    fun tempStore(): Path = tempdir("ktcs-store-test").toPath()
+
     test("orders and sequences are written, read back after a restart, equal to what they were") {
         val directory = tempStore()
         val before = RestartableKernel(RestartableKernel.settingsFor(directory)).run {

@@ -1,6 +1,7 @@
 package org.ktcs.xmlchannels.orders
 
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.engine.spec.tempdir
 import io.kotest.matchers.shouldBe
 import org.ktcs.xmlchannels.FakeKernelServices
 import org.ktcs.xmlchannels.HostClient
@@ -14,7 +15,7 @@ import java.nio.file.Files
 import java.nio.file.Path
 
 class OrderScriptTest : FunSpec({
-    fun scriptsWith(vararg files: Pair<String, String>): Path = Files.createTempDirectory("ktcs-host").let { root ->
+    fun scriptsWith(vararg files: Pair<String, String>): Path = tempdir("ktcs-host").toPath().let { root ->
         Files.createDirectory(root.resolve("scripts")).also { scripts ->
             files.forEach { (name, text) -> Files.writeString(scripts.resolve(name), text) }
         }
@@ -72,7 +73,7 @@ class OrderScriptTest : FunSpec({
     }
 
     test("template.tcs is written on the first start, valid by the script schema, and kept afterwards") {
-        val scripts = Files.createTempDirectory("ktcs-host").resolve("scripts")
+        val scripts = tempdir("ktcs-host").toPath().resolve("scripts")
         withChannels(settings = testSettings(scripts)) {}
         val template = scripts.resolve(ScriptFiles.TEMPLATE)
         HostSchemas.orderScript.validate(Files.readString(template))

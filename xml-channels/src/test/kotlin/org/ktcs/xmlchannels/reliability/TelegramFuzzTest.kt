@@ -1,6 +1,7 @@
 package org.ktcs.xmlchannels.reliability
 
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.engine.spec.tempdir
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.string.shouldContain
@@ -25,7 +26,7 @@ import java.nio.file.Files
  */
 class TelegramFuzzTest : FunSpec({
     test("$CASES generated telegrams: no failure, nothing created by invalid input, both channels alive") {
-        val scripts = Files.createTempDirectory("ktcs-fuzz-scripts")
+        val scripts = tempdir("ktcs-fuzz-scripts").toPath()
         val config = ConfigLoader().load(
             null,
             emptyMap(),
