@@ -12,6 +12,9 @@ internal class LastEncoded<T : Any, E : Any>(private val capacity: Int, private 
         override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, Pair<T, E>>) = size > capacity
     }
 
+    /** What the object named [name] was encoded to last, if it is still kept. */
+    fun lastOf(name: String): E? = synchronized(last) { last[name]?.second }
+
     /** [value], the current object named [name], encoded: anew only if it is not the object encoded last. */
     fun of(name: String, value: T): E {
         synchronized(last) { last[name]?.takeIf { it.first === value }?.let { return it.second } }

@@ -2,6 +2,7 @@ package org.ktcs.kernel.web.ws
 
 import kotlinx.serialization.builtins.SetSerializer
 import kotlinx.serialization.builtins.serializer
+import org.ktcs.kernel.web.LastEncoded
 import org.ktcs.kernel.web.v1.V1Json
 
 /**
@@ -11,19 +12,13 @@ import org.ktcs.kernel.web.v1.V1Json
  * rather than encoded again: an event then costs a copy, not the route's length in JSON encoding. Safe to use from
  * several threads.
  */
-internal class EncodedResourceLists(private val capacity: Int) {
-    private val last = object : LinkedHashMap<String, Encoded>(16, 0.75f, true) {
-        override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, Encoded>) = size > capacity
-    }
+internal class EncodedResourceLists(capacity: Int) {
+    private val last = LastEncoded(capacity, ::encode)
 
     /** [list], the list of the vehicle named [name], as a JSON array of arrays of names. */
     fun of(name: String, list: List<Set<String>>): ByteArray {
         if (list.isEmpty()) return EMPTY
-        val before = synchronized(last) { last[name] }
-        if (before != null) before.endOf(list)?.let { return it }
-        val encoded = encode(list)
-        synchronized(last) { last[name] = encoded }
-        return encoded.bytes
+        return last.lastOf(name)?.endOf(list) ?: last.of(name, list).bytes
     }
 
     /** A list's JSON, and where each of its elements starts in it. */

@@ -5,6 +5,7 @@ import org.ktcs.api.event.TransportOrderEvent
 import org.ktcs.api.event.VehicleEvent
 import org.ktcs.api.model.Vehicle
 import org.ktcs.api.order.TransportOrder
+import java.io.ByteArrayOutputStream
 
 /**
  * The large fields of an event's object that a client keeping the object's latest state already has: an order under
@@ -59,51 +60,26 @@ internal fun rewriteFields(
 ): ByteArray {
     val omitted = omit.map { utf8("\"$it\":") }
     val replaced = replace.map { (name, value) -> utf8("\"$name\":") to value }
-    val out = GrowingBytes(json.size)
-    out.add(json[0])
+    val out = ByteArrayOutputStream(json.size)
+    out.write(json[0].toInt())
     var at = 1
     while (at < json.size && json[at] != CLOSE_BRACE) {
         val valueAt = endOfString(json, at) + 1
         val end = endOfValue(json, valueAt)
         if (omitted.none { startsWith(json, at, it) }) {
-            if (out.size > 1) out.add(COMMA)
+            if (out.size() > 1) out.write(COMMA.toInt())
             val value = replaced.firstOrNull { startsWith(json, at, it.first) }?.second
             if (value == null) {
-                out.add(json, at, end)
+                out.write(json, at, end - at)
             } else {
-                out.add(json, at, valueAt)
-                val bytes = value()
-                out.add(bytes, 0, bytes.size)
+                out.write(json, at, valueAt - at)
+                out.write(value())
             }
         }
         at = if (end < json.size && json[end] == COMMA) end + 1 else end
     }
-    out.add(CLOSE_BRACE)
+    out.write(CLOSE_BRACE.toInt())
     return out.toByteArray()
-}
-
-/** Bytes appended to a buffer that grows as needed. */
-private class GrowingBytes(capacity: Int) {
-    private var bytes = ByteArray(maxOf(capacity, 2))
-    var size = 0
-        private set
-
-    fun add(byte: Byte) {
-        ensure(1)
-        bytes[size++] = byte
-    }
-
-    fun add(from: ByteArray, start: Int, end: Int) {
-        ensure(end - start)
-        from.copyInto(bytes, size, start, end)
-        size += end - start
-    }
-
-    fun toByteArray(): ByteArray = bytes.copyOf(size)
-
-    private fun ensure(more: Int) {
-        if (size + more > bytes.size) bytes = bytes.copyOf(maxOf(bytes.size * 2, size + more))
-    }
 }
 
 private const val QUOTE = '"'.code.toByte()
@@ -114,7 +90,7 @@ private const val CLOSE_BRACE = '}'.code.toByte()
 private const val OPEN_BRACKET = '['.code.toByte()
 private const val CLOSE_BRACKET = ']'.code.toByte()
 
-internal fun startsWith(json: ByteArray, at: Int, prefix: ByteArray): Boolean {
+private fun startsWith(json: ByteArray, at: Int, prefix: ByteArray): Boolean {
     if (at + prefix.size > json.size) return false
     for (i in prefix.indices) if (json[at + i] != prefix[i]) return false
     return true
