@@ -10,7 +10,8 @@ import org.slf4j.LoggerFactory
 /**
  * Looks for vehicles that wait for each other in a cycle, reports each deadlock once (user notification and log
  * line naming vehicles and resources) and breaks it by routing one of the vehicles around what blocks it. Also sends
- * idle vehicles that stand in a waiting vehicle's way elsewhere ([IdleBlockers]).
+ * idle vehicles that stand in a waiting vehicle's way elsewhere ([IdleBlockers]), and first makes a vehicle yield to a
+ * fresh claim that waits for itself ([BlockedClaims]).
  * The check costs in proportion to the waiting vehicles, not the plant.
  */
 class DeadlockWatchdog(private val kernel: KernelCore, private val state: KernelState) : WatchdogFigures {
@@ -19,6 +20,7 @@ class DeadlockWatchdog(private val kernel: KernelCore, private val state: Kernel
     private val stuck = StuckStates()
     private val idleBlockers = IdleBlockers(kernel, state)
     private val retreating = Retreats(kernel)
+    private val blockedClaims = BlockedClaims(kernel, state)
 
     override val detected: Int get() = stuck.detected
 
@@ -27,6 +29,8 @@ class DeadlockWatchdog(private val kernel: KernelCore, private val state: Kernel
     override val idleVehiclesMoved: Int get() = idleBlockers.moved
 
     override val retreats: Int get() = retreating.sent
+
+    override val claimYields: Int get() = blockedClaims.yields
 
     fun start() {
         // The period is vehicle time: at time factor 100 a check every kernel second would let vehicles drive 100 s
@@ -50,6 +54,7 @@ class DeadlockWatchdog(private val kernel: KernelCore, private val state: Kernel
 
     /** Finds and handles the current deadlocks. */
     fun check() {
+        blockedClaims.check(retreating)
         // A fleet held back by deadlock avoidance gets moving by a retreat first: planned avoidance, not a deadlock
         // found (a cycle it breaks is not counted; one it does not break is found at the next check).
         if (retreating.check()) return

@@ -14,6 +14,12 @@ interface WatchdogFigures {
      */
     val retreats: Int
 
+    /**
+     * How many vehicles yielded to a fresh claim that waited, through them, for itself (planned avoidance, not a
+     * deadlock: [BlockedClaims]).
+     */
+    val claimYields: Int
+
     /** How many idle vehicles were sent out of the way of waiting ones. */
     val idleVehiclesMoved: Int
 }

@@ -161,6 +161,7 @@ class SimulationRunner(
             deadlocksResolved = kernel.core.watchdog.resolved,
             idleVehiclesMoved = kernel.core.watchdog.idleVehiclesMoved,
             retreats = kernel.core.watchdog.retreats,
+            claimYields = kernel.core.watchdog.claimYields,
             grantsHeldBack = kernel.core.scheduler.grantsHeldBack,
         )
     }

@@ -22,10 +22,13 @@ internal fun VehicleController.avoidBlockedStart(): Boolean {
     val path = first.command.step.path
     if (remaining.all { it.command.step.path == null }) {
         rerouteNextLeg()
+        claimBlocked = scheduler.claimIsBlocked(this)
         return false
     }
-    return (path != null && reroute(setOf(path)) && !scheduler.claimIsBlocked(this)) ||
+    val rerouted = (path != null && reroute(setOf(path)) && !scheduler.claimIsBlocked(this)) ||
         reroute(first.resources - setOfNotNull(position))
+    claimBlocked = scheduler.claimIsBlocked(this)
+    return rerouted
 }
 
 /**

@@ -173,7 +173,10 @@ internal fun VehicleController.retreatVia(park: String, occupied: Set<String>): 
     val steps = (away.steps + back.steps).filter { it.path != null }
     if (steps.isEmpty()) return false
     val rerouted = reroutedDriveOrder(order, driveOrder, oldRoute, Route(steps, away.costs + back.costs))
-    if (closesCycle(order, commandsAhead(order, rerouted))) return false
+    val ahead = commandsAhead(order, rerouted)
+    // A step index the vehicle reported from the route before the last reroute can lie beyond this route's kept steps:
+    // following it would leave the vehicle with nothing to ask for, standing where it is for good.
+    if (ahead.isEmpty() || closesCycle(order, ahead)) return false
     followNewRoute(order, rerouted)
     return true
 }

@@ -29,6 +29,13 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
     internal val sent = ArrayDeque<PlannedCommand>()
     internal var waiting: PlannedCommand? = null
 
+    /**
+     * Whether the vehicle's fresh claim waits, through others, for itself and no route around it was found: some
+     * vehicle in its way has to yield first ([org.ktcs.kernel.core.BlockedClaims]). Cleared at its next grant.
+     */
+    var claimBlocked = false
+        internal set
+
     // The vehicle's `transportOrder` is the one store of the order it works on; the controller reads it there.
     internal val currentOrder: String? get() = env.plant.vehicle(name).transportOrder
     internal var withdrawing = false
@@ -138,6 +145,7 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
             return false
         }
         held.add(resources)
+        claimBlocked = false
         sent.addLast(granted)
         publishResources()
         requestNext()
@@ -230,6 +238,7 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
     private fun endOrder(state: TransportOrderState) {
         val order = currentOrder!!
         withdrawing = false
+        claimBlocked = false
         remaining.clear()
         env.scheduler().unclaim(this)
         releaseAllButPosition()

@@ -1,0 +1,59 @@
+package org.ktcs.kernel.core
+
+import org.slf4j.LoggerFactory
+
+/**
+ * Gets a vehicle started whose fresh claim waits, through others, for itself, with no way around it: a vehicle in a
+ * station stub whose new route leaves past the vehicle waiting at the stub's mouth to come in, or two vehicles in the
+ * stubs of one aisle bound for each other's station. A claim cannot be refused, and no grant can undo such a knot, so
+ * at the watchdog's next check one of its vehicles yields, before their wait counts as a deadlock (a grant held back
+ * counts after two periods): the ones in the claimant's way first, each through a free park bay in reach or a free
+ * point nearby, then the claimant ([Retreats.breakCycle]; each yield also counts as a retreat). A knot that no yield
+ * breaks within [MAX_TRIES] checks is left to the deadlock search, which reports it.
+ */
+internal class BlockedClaims(private val kernel: KernelCore, private val state: KernelState) {
+    private val log = LoggerFactory.getLogger(BlockedClaims::class.java)
+    private val tries = HashMap<String, Int>()
+
+    /** How many blocked claims were unblocked by a yield. */
+    var yields = 0
+        private set
+
+    fun check(retreating: Retreats) {
+        val blocked = state.controllers.all().filter { it.claimBlocked }
+        if (blocked.isEmpty()) {
+            if (tries.isNotEmpty()) tries.clear()
+            return
+        }
+        tries.keys.retainAll(blocked.mapTo(HashSet()) { it.name })
+        val scheduler = kernel.scheduler
+        for (claimant in blocked) {
+            if (!scheduler.claimIsBlocked(claimant)) {
+                claimant.claimBlocked = false
+                continue
+            }
+            val allocations = scheduler.allocations()
+            val keys = scheduler.claimBlockers(claimant)
+            val inTheWay = allocations.filter { (vehicle, held) ->
+                vehicle != claimant.name && held.any(keys::contains)
+            }
+            if (retreating.breakCycle(inTheWay.keys.sorted() + claimant.name)) {
+                yields++
+                claimant.claimBlocked = false
+                log.info(
+                    "traffic: vehicle {} has a route blocked by {}; one of them yields",
+                    claimant.name,
+                    inTheWay.keys,
+                )
+                continue
+            }
+            val tried = (tries[claimant.name] ?: 0) + 1
+            tries[claimant.name] = tried
+            if (tried >= MAX_TRIES) claimant.claimBlocked = false
+        }
+    }
+
+    private companion object {
+        const val MAX_TRIES = 3
+    }
+}
