@@ -27,7 +27,7 @@ import java.util.concurrent.atomic.AtomicInteger
  */
 class CrashRecoveryEndToEndTest : FunSpec({
     test("after kill -9 and a restart every accepted order is there once and finishes, nothing allocated twice") {
-        val data = Files.createTempDirectory("ktcs-crash")
+        val data = Files.createTempDirectory(Path.of("target").toAbsolutePath(), "ktcs-crash")
         val accepted = ConcurrentHashMap.newKeySet<String>()
         val first = start(data)
         val firstBase = baseOf(first)

@@ -14,7 +14,7 @@ import kotlin.time.Duration.Companion.seconds
  * Collects the merged output line by line.
  */
 class KtcsProcess(vararg args: String, workingDirectory: Path = RepositoryRoot.path) : AutoCloseable {
-    private val dataDirectory: Path = Files.createTempDirectory("ktcs-e2e-data")
+    private val dataDirectory: Path = Files.createTempDirectory(Path.of("target").toAbsolutePath(), "ktcs-e2e-data")
     private val process: Process =
         ProcessBuilder(listOf(RepositoryRoot.path.resolve("ktcs").toString(), "--no-build") + args)
             .directory(workingDirectory.toFile())

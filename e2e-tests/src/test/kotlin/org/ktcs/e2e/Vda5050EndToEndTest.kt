@@ -14,6 +14,7 @@ import java.net.http.HttpClient
 import java.net.http.HttpRequest
 import java.net.http.HttpResponse
 import java.nio.file.Files
+import java.nio.file.Path
 import kotlin.time.Duration.Companion.seconds
 
 /**
@@ -31,7 +32,7 @@ class Vda5050EndToEndTest : FunSpec({
             "xml.orders.port=0",
             "xml.status.port=0",
             "vda5050.embeddedBroker.port=$broker",
-            "kernel.dataDirectory=${Files.createTempDirectory("ktcs-vda-e2e")}",
+            "kernel.dataDirectory=${Files.createTempDirectory(Path.of("target").toAbsolutePath(), "ktcs-vda-e2e")}",
         )
         KtcsProcess("--model", plant.toString(), *settings.flatMap { listOf("--set", it) }.toTypedArray()).use { ktcs ->
             val base = Regex("web API (http://\\S+)/v1").find(ktcs.awaitLine("kTCS ready"))!!.groupValues[1]

@@ -17,6 +17,7 @@ import org.ktcs.kernel.config.ConfigLoader
 import java.net.URI
 import java.net.http.HttpClient
 import java.net.http.WebSocket
+import java.nio.file.Path
 import java.util.concurrent.CompletableFuture
 import java.util.concurrent.CompletionStage
 import java.util.concurrent.TimeUnit
@@ -93,7 +94,7 @@ class OverviewServerTest : FunSpec({
     test("an unknown theme name stops ./ktcs with that one line, not wrapped in Koin's definitions") {
         val err = java.io.ByteArrayOutputStream()
         // Like every start here: its data (state store, log file) in a temporary directory, not in the module's.
-        val data = java.nio.file.Files.createTempDirectory("ktcs-overview-data")
+        val data = java.nio.file.Files.createTempDirectory(Path.of("target").toAbsolutePath(), "ktcs-overview-data")
         val args = listOf(
             "--set",
             "web.port=0",

@@ -21,7 +21,9 @@ import java.nio.file.Path
 class RunningKtcs(
     overrides: List<String> = emptyList(),
     model: LoadedModel? = null,
-    val dataDirectory: Path = Files.createTempDirectory("ktcs-overview-data").also { it.toFile().deleteOnExit() },
+    val dataDirectory: Path = Files.createTempDirectory(Path.of("target").toAbsolutePath(), "ktcs-overview-data").also {
+        it.toFile().deleteOnExit()
+    },
 ) : AutoCloseable {
     private val config =
         ConfigLoader().load(null, emptyMap(), BASE_SETTINGS + "kernel.dataDirectory=$dataDirectory" + overrides)

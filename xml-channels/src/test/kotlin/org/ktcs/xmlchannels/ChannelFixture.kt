@@ -8,7 +8,9 @@ import java.time.ZoneOffset
 import kotlin.time.Duration.Companion.milliseconds
 
 /** Settings for tests: free ports on the loopback interface, a fresh scripts directory, short timeouts. */
-fun testSettings(scripts: Path = Files.createTempDirectory("ktcs-scripts")) = XmlChannelSettings(
+fun testSettings(
+    scripts: Path = Files.createTempDirectory(Path.of("target").toAbsolutePath(), "ktcs-scripts"),
+) = XmlChannelSettings(
     bindAddress = "127.0.0.1",
     ordersPort = 0,
     statusPort = 0,

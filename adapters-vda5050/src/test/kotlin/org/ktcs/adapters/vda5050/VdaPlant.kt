@@ -21,6 +21,7 @@ import java.net.http.HttpClient
 import java.net.http.HttpRequest
 import java.net.http.HttpResponse
 import java.nio.file.Files
+import java.nio.file.Path
 import java.util.Collections
 import java.util.concurrent.Executors
 
@@ -43,7 +44,7 @@ fun testConfig(vararg settings: String) = ConfigLoader().load(
     listOf(
         "web.port=0",
         "web.bindAddress=127.0.0.1",
-        "kernel.dataDirectory=${Files.createTempDirectory("ktcs-vda-test")}",
+        "kernel.dataDirectory=${Files.createTempDirectory(Path.of("target").toAbsolutePath(), "ktcs-vda-test")}",
         "persistence.durability=OFF",
     ) + settings,
 )

@@ -35,7 +35,7 @@ import kotlin.time.Duration.Companion.seconds
  */
 class WholePlantEndToEndTest : FunSpec({
     test("REST, XML and browser orders all finish on a plant with extension jars, without double allocations") {
-        val directory = Files.createTempDirectory("ktcs-whole-plant")
+        val directory = Files.createTempDirectory(Path.of("target").toAbsolutePath(), "ktcs-whole-plant")
         val extensions = Files.createDirectories(directory.resolve("extensions"))
         Files.copy(ExampleJars.tcpVehicleDriver, extensions.resolve("ktcs-example-tcp-vehicle-driver.jar"))
         Files.copy(ExampleJars.overviewPanelTheme, extensions.resolve("ktcs-example-overview-panel-theme.jar"))

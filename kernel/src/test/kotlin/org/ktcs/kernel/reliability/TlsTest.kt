@@ -24,7 +24,7 @@ import kotlin.io.path.absolutePathString
 
 /** HTTPS for the web API, the overview and the WebSocket (`web.tls.*`), checked with the JDK's TLS client. */
 class TlsTest : FunSpec({
-    val directory = Files.createTempDirectory("ktcs-tls")
+    val directory = Files.createTempDirectory(Path.of("target").toAbsolutePath(), "ktcs-tls")
     val keyStore = directory.resolve("ktcs.p12")
     // As the README tells operators to do it: a self-signed certificate for this machine, made with keytool.
     val keytool = Path.of(System.getProperty("java.home"), "bin", "keytool").toString()
