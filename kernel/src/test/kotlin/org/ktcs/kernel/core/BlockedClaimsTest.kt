@@ -10,7 +10,6 @@ import org.ktcs.api.model.Vehicle
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
-import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.kernel.scheduling.WaitForGraph
 import org.ktcs.kernel.simulation.SimulationKernel
 
@@ -20,15 +19,7 @@ import org.ktcs.kernel.simulation.SimulationKernel
  * vehicle in its way yields at once, before the two have waited long enough to be a deadlock.
  */
 class BlockedClaimsTest : FunSpec({
-    val config = ConfigLoader().load(
-        null,
-        emptyMap(),
-        listOf(
-            "kernel.deadlockCheckInterval=0",
-            "dispatcher.parkIdleVehicles=false",
-            "dispatcher.rechargeIdleVehicles=false",
-        ),
-    )
+    val config = manualWatchdogConfig()
 
     // A two-way lane W2 - W1 - M - E with a dead-end stub S at M; E is a dead-end park bay, W2 a junction (on to W3 or
     // N). `In` stands in the stub, `Out` comes from W2 to go into the stub; then `In` is sent to W2, through the

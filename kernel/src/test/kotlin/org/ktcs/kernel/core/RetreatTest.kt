@@ -13,7 +13,6 @@ import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.order.TransportOrderState
 import org.ktcs.api.scheduling.Retreat
 import org.ktcs.api.scheduling.Scheduler
-import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.kernel.context.KernelContext
 import org.ktcs.kernel.scheduling.DefaultScheduler
 import org.ktcs.kernel.simulation.SimulationKernel
@@ -34,15 +33,7 @@ private class RetreatingScheduler(inner: Scheduler) : Scheduler by inner {
  * vehicle sent is routed on through the park point to where it was going.
  */
 class RetreatTest : FunSpec({
-    val config = ConfigLoader().load(
-        null,
-        emptyMap(),
-        listOf(
-            "kernel.deadlockCheckInterval=0",
-            "dispatcher.parkIdleVehicles=false",
-            "dispatcher.rechargeIdleVehicles=false",
-        ),
-    )
+    val config = manualWatchdogConfig()
     // A -> W -> X -> B -> D is the way; the park point P is a detour from X back to B.
     val model = PlantModel(
         "retreat",
