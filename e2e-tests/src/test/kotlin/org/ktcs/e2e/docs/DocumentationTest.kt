@@ -10,6 +10,7 @@ import org.ktcs.e2e.RepositoryRoot
 import org.ktcs.kernel.app.ConfigReference
 import org.ktcs.kernel.orders.TransportOrderTransitions
 import java.nio.file.Files
+import java.nio.file.Path
 import kotlin.io.path.extension
 import kotlin.io.path.listDirectoryEntries
 
@@ -39,7 +40,7 @@ class DocumentationTest : FunSpec({
     }
 
     context("the snippet check reports") {
-        val sources = Files.createTempDirectory("ktcs-snippets")
+        val sources = Files.createTempDirectory(Path.of("target").toAbsolutePath(), "ktcs-snippets")
         Files.createDirectories(sources.resolve("src"))
         Files.writeString(
             sources.resolve("src/Example.kt"),

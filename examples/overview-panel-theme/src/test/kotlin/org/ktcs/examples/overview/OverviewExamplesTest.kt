@@ -85,7 +85,10 @@ private object Node {
     }
 
     fun copyModules(contribution: OverviewContribution, vararg files: String): Path {
-        val directory = Files.createTempDirectory("ktcs-overview-${contribution.name}")
+        val directory = Files.createTempDirectory(
+            Path.of("target").toAbsolutePath(),
+            "ktcs-overview-${contribution.name}",
+        )
         Files.writeString(directory.resolve("package.json"), """{"type":"module"}""")
         files.forEach { file ->
             val resource = contribution.classLoader.getResourceAsStream("${contribution.resourceDirectory}/$file")
