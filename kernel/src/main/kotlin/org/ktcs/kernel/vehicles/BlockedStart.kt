@@ -25,8 +25,8 @@ internal fun VehicleController.avoidBlockedStart(): Boolean {
         claimBlocked = scheduler.claimIsBlocked(this)
         return false
     }
-    val rerouted = (path != null && reroute(setOf(path)) && !scheduler.claimIsBlocked(this)) ||
-        reroute(first.resources - setOfNotNull(position))
+    if (path != null && reroute(setOf(path)) && !scheduler.claimIsBlocked(this)) return true
+    val rerouted = reroute(first.resources - setOfNotNull(position))
     claimBlocked = scheduler.claimIsBlocked(this)
     return rerouted
 }

@@ -174,8 +174,9 @@ internal fun VehicleController.retreatVia(park: String, occupied: Set<String>): 
     if (steps.isEmpty()) return false
     val rerouted = reroutedDriveOrder(order, driveOrder, oldRoute, Route(steps, away.costs + back.costs))
     val ahead = commandsAhead(order, rerouted)
-    // A step index the vehicle reported from the route before the last reroute can lie beyond this route's kept steps:
-    // following it would leave the vehicle with nothing to ask for, standing where it is for good.
+    // The step index the order records can lie beyond the route's steps (seen once, on the warehouse after a chain of
+    // side steps and reroutes; where it goes stale is not found yet): then nothing is ahead, and following the new
+    // route would leave the vehicle with nothing to ask for, standing where it is for good.
     if (ahead.isEmpty() || closesCycle(order, ahead)) return false
     followNewRoute(order, rerouted)
     return true
