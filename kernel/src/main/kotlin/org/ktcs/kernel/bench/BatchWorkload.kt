@@ -41,6 +41,7 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
             val wall = (end - start) / OrderPosting.NANOS_PER_SECOND
             figures.record("makespan_wall_s", wall)
             figures.record("makespan_simulated_s", wall * options.timeFactor)
+            recordFinalShares(watcher.finalTimes(prefix), start, batch.size)
             val trips = batch.map { Trip(it.from, BenchClient.LOAD, it.to, BenchClient.UNLOAD) }
             figures.record("lower_bound_simulated_s", bound.seconds(trips, vehicles))
             val latencies = watcher.assignLatenciesMillis()
@@ -65,6 +66,19 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
         shown.forEach { (kind, seconds) -> figures.record("cpu_ms_per_order.$kind", seconds * MILLIS / finished) }
         val others = kinds.drop(THREAD_KINDS_SHOWN).sumOf { it.second }
         figures.record("cpu_ms_per_order.(other threads)", others * MILLIS / finished)
+    }
+
+    /**
+     * The wall-clock seconds by which half, nine in ten and 99 in 100 of the posted orders were final
+     * (`final_50_percent_wall_s` …): whether the makespan is the whole batch's pace or a few late orders.
+     */
+    private fun recordFinalShares(finalTimes: List<Long>, start: Long, posted: Int) {
+        val sorted = finalTimes.sorted()
+        for (percent in FINAL_PERCENTS) {
+            val needed = (posted * percent + PERCENT - 1) / PERCENT
+            val at = sorted.getOrNull(needed - 1) ?: continue
+            figures.record("final_${percent}_percent_wall_s", (at - start) / OrderPosting.NANOS_PER_SECOND)
+        }
     }
 
     /** Waits until every order of the batch is final or none became final for a while; returns when it stopped. */
@@ -98,6 +112,8 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
         const val MEDIAN = 0.5
         const val P99 = 0.99
         const val POLL_MILLIS = 10L
+        const val PERCENT = 100
+        val FINAL_PERCENTS = listOf(50, 90, 99)
         const val THREAD_KINDS_SHOWN = 8
         const val BYTES_PER_MIB = 1024.0 * 1024.0
     }

@@ -17,6 +17,7 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
     private val orderStates = HashMap<String, String>()
     private val dispatchableAt = HashMap<String, Long>()
     private val assignLatencies = ArrayList<Double>()
+    private val finalAt = HashMap<String, Long>()
     private val fleet = FleetConflicts()
     private var deadlocks = 0
     private var idleVehiclesMoved = 0
@@ -35,6 +36,10 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
     ): Map<String, String> = synchronized(lock) { orderStates.filterKeys { it.startsWith(prefix) } }
 
     fun assignLatenciesMillis(): List<Double> = synchronized(lock) { assignLatencies.toList() }
+
+    /** When ([System.nanoTime]) each order whose name starts with [prefix] and that is final became so. */
+    fun finalTimes(prefix: String): List<Long> =
+        synchronized(lock) { finalAt.filterKeys { it.startsWith(prefix) }.values.toList() }
 
     fun doubleAllocations(): Int = synchronized(lock) { fleet.doubleAllocations() }
 
@@ -106,6 +111,8 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
                 assignLatencies +=
                     (now - it) / OrderPosting.NANOS_PER_MILLI
             }
+
+            in OrderPosting.FINAL_STATES -> finalAt.putIfAbsent(name, now)
         }
     }
 
