@@ -47,7 +47,11 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     private var releases = 0L
     private var nextSeq = 0L
 
-    override val grantsHeldBack: Long get() = safety.heldBack + parks.heldBack
+    override val grantsHeldBack: Long get() = safety.heldBack + parks.heldBack + deadHolesAvoided
+
+    /** Grants held back because they would have left a free point that nobody asking for it could take. */
+    var deadHolesAvoided = 0L
+        private set
 
     /** Grants the park test had held back that its patience then left to the local rule alone. */
     var grantsAfterPatience = 0L
@@ -338,6 +342,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
             val behind = keysOf(request.client.heldAfter(request.resources))
             val refusal = when {
                 !safety.mayGrant(request.client.name, request.keys, behind) -> GrantWait.LOCAL_RULE
+                leavesDeadHole(request, behind) -> GrantWait.LOCAL_RULE
                 !parkSafe(request, behind) -> GrantWait.PARK_TEST
                 else -> null
             }
@@ -354,6 +359,18 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
             queue += pending.waitingFor(grant(request))
         }
     }
+
+    private fun leavesDeadHole(request: Request, behind: Set<String>): Boolean {
+        if (!safety.leavesDeadHole(request.client.name, request.keys, behind, ::requestersOf)) return false
+        deadHolesAvoided++
+        return true
+    }
+
+    // The first requests of the clients that ask for [key].
+    private fun requestersOf(key: String): List<RouteSafety.Requester> =
+        pending.waitingFor(setOf(key)).filter { pending.isHead(it) && key in it.keys }.map {
+            RouteSafety.Requester(it.client.name, it.keys, keysOf(it.client.heldAfter(it.resources)))
+        }
 
     // The park test is a preference, not a wall: a grant it has held back for PARK_TEST_PATIENCE_MILLIS is left to the
     // local rule alone (whose holds the watchdog sees), so a plant the test judges too pessimistically never freezes.

@@ -34,6 +34,11 @@ internal class RouteSafety(
     private val routes = HashMap<String, ArrayDeque<Step>>()
     private val wayOut = HashMap<String, Exit>()
 
+    // A grant looked at as if made ([leavesDeadHole]): its client holds [Assumed.held] and its route starts after it.
+    private class Assumed(val client: String, val held: Set<String>)
+
+    private var assumed: Assumed? = null
+
     /** How many grants were held back because they would have closed a cycle. */
     var heldBack = 0L
         private set
@@ -94,9 +99,10 @@ internal class RouteSafety(
         return true
     }
 
-    private fun isSafe(client: String, keys: Set<String>, behind: Set<String>): Boolean {
+    // [pinned]: a vehicle that stays where it stands, whatever it needs.
+    private fun isSafe(client: String, keys: Set<String>, behind: Set<String>, pinned: String? = null): Boolean {
         val held = heldAfter(keys, behind)
-        return !Walk(client, held).isBlocked(lookAhead(client, skipping = keys, holding = held), client)
+        return !Walk(client, held, pinned).isBlocked(lookAhead(client, skipping = keys, holding = held), client)
     }
 
     /**
@@ -111,6 +117,93 @@ internal class RouteSafety(
         val noWayOn = ahead.options.all { option -> option.any { key -> holders(key).any { it != client } } }
         if (noWayOn) ahead.options.flatten().forEach(::note)
         return blockers
+    }
+
+    /** A step a vehicle asks for: its client, its keys and what its length covers behind it once there. */
+    class Requester(val client: String, val keys: Set<String>, val behind: Set<String>)
+
+    /**
+     * Whether granting [keys] to [client] (which passed [mayGrant]) would leave a *dead hole*: a free point or path that
+     * a vehicle in the grantee's way needs next and that another vehicle asking for it ([requesters]) could take now,
+     * even if the grantee never moved, but that none of them (the grantee included, for its own next step) could take
+     * once the grantee has driven there, since each would then wait, through a chain of waits, for itself.
+     * Such a key stays free for good and every vehicle queued on it waits: the grids' two full squares that share
+     * their last free corner (developer's guide, "The traffic rule"). Only one-way steps are looked at: on a two-way
+     * stretch the look-ahead covers the whole stretch already. The check follows at most [MAX_AHEAD] vehicles ahead.
+     * Only the vehicles that have asked count: counting every vehicle whose next claimed step it is held back more
+     * grants, for more deadlocks through the web API and a longer makespan (developer's guide, section 12).
+     */
+    fun leavesDeadHole(
+        client: String,
+        keys: Set<String>,
+        behind: Set<String>,
+        requesters: (key: String) -> Collection<Requester>,
+    ): Boolean {
+        if (keys.any(exits::isTwoWay)) return false
+        val held = heldAfter(keys, behind)
+        val after = routes[client]?.let { ArrayDeque(it) }?.also { steps ->
+            val physical = physicalOf(keys)
+            val index = steps.indexOfFirst { it.physical == physical }
+            if (index >= 0) steps.removeAt(index)
+        }
+        val holes = assume(client, held, after) { holesAhead(client) }
+        if (holes.isEmpty()) return false
+        val next = after?.firstOrNull()?.let { Requester(client, it.keys, emptySet()) }
+        val safeBefore = HashMap<String, Boolean>()
+        val safeAfter = HashMap<String, Boolean>()
+        return holes.any { hole ->
+            val others = requesters(hole).filter { it.client != client }
+            val asking = if (next != null && hole in next.keys) others + next else others
+            others.none { it.keys.any(exits::isTwoWay) } &&
+                others.any { safeBefore.getOrPut(it.client) { isSafeFor(it, pinned = client) } } &&
+                asking.none { safeAfter.getOrPut(it.client) { assume(client, held, after) { isSafeFor(it) } } }
+        }
+    }
+
+    private fun isSafeFor(requester: Requester, pinned: String? = null): Boolean =
+        isSafe(requester.client, requester.keys, requester.behind, pinned)
+
+    // The free keys that [client] or a vehicle in its way, through the holders of what each needs, needs next. What
+    // the grantee leaves behind is none: nobody could take it before the grant.
+    private fun holesAhead(client: String): Set<String> {
+        val holes = HashSet<String>()
+        val seen = hashSetOf(client)
+        val queue = ArrayDeque(listOf(client))
+        while (queue.isNotEmpty() && seen.size <= MAX_AHEAD) {
+            val ahead = lookAhead(queue.removeFirst())
+            for (key in ahead.required + ahead.options.flatten()) {
+                val keyHolders = holdersOf(key)
+                if (keyHolders.isEmpty() && holders(key).isEmpty()) holes += key
+                for (holder in keyHolders) if (seen.add(holder)) queue += holder
+            }
+        }
+        return holes
+    }
+
+    private inline fun <T> assume(client: String, held: Set<String>, route: ArrayDeque<Step>?, body: () -> T): T {
+        val real = routes[client]
+        assumed = Assumed(client, held)
+        if (route != null) routes[client] = route
+        try {
+            return body()
+        } finally {
+            assumed = null
+            if (real != null) routes[client] = real
+        }
+    }
+
+    private fun holdingsOf(client: String): Set<String> =
+        assumed?.takeIf { it.client == client }?.held ?: holdings(client)
+
+    private fun holdersOf(key: String): Collection<String> {
+        val real = holders(key)
+        val assumption = assumed ?: return real
+        val holdsReally = assumption.client in real
+        return when {
+            key in assumption.held == holdsReally -> real
+            holdsReally -> real.filter { it != assumption.client }
+            else -> real + assumption.client
+        }
     }
 
     /** Whether [client], as it stands, waits through a chain of waits for itself (only a fresh claim can do that). */
@@ -158,7 +251,11 @@ internal class RouteSafety(
      * vehicles that each need the other only because the grantee holds their one other way on (a vehicle standing
      * between them on a two-way track, with a bay beside it) wait, though neither waits for the grantee directly.
      */
-    private inner class Walk(private val grantee: String, private val held: Set<String>) {
+    private inner class Walk(
+        private val grantee: String,
+        private val held: Set<String>,
+        private val pinned: String? = null,
+    ) {
         private val waiting = HashSet<String>()
 
         fun isBlocked(ahead: LookAhead, self: String): Boolean {
@@ -171,14 +268,14 @@ internal class RouteSafety(
                 (ahead.options.isNotEmpty() && ahead.options.all { option -> option.any { isTaken(it, self) } })
 
         fun isTaken(key: String, self: String): Boolean =
-            (self != grantee && key in held) || holders(key).any { it != self && it in waiting }
+            (self != grantee && key in held) || holdersOf(key).any { it != self && it in waiting }
 
         private fun settle(start: LookAhead) {
             val near = LinkedHashMap<String, LookAhead>()
             val queue = ArrayDeque<String>()
             fun reach(ahead: LookAhead) {
                 for (key in ahead.required + ahead.options.flatten()) {
-                    for (holder in holders(key)) {
+                    for (holder in holdersOf(key)) {
                         if (holder != grantee && holder !in near) {
                             near[holder] = lookAhead(holder)
                             queue += holder
@@ -193,7 +290,7 @@ internal class RouteSafety(
             do {
                 var changed = false
                 for (client in order) {
-                    if (client in waiting && !blocks(near.getValue(client), client)) {
+                    if (client in waiting && client != pinned && !blocks(near.getValue(client), client)) {
                         waiting -= client
                         changed = true
                     }
@@ -212,7 +309,7 @@ internal class RouteSafety(
     private fun lookAhead(
         client: String,
         skipping: Set<String>? = null,
-        holding: Set<String> = holdings(client),
+        holding: Set<String> = holdingsOf(client),
     ): LookAhead {
         val exit = wayOut[client] ?: Exit.NONE
         val route = routes[client] ?: return LookAhead(exit.required, exit.options)
@@ -239,6 +336,8 @@ internal class RouteSafety(
         return LookAhead(ahead, exit.options)
     }
 }
+
+private const val MAX_AHEAD = 64
 
 private fun physicalOf(keys: Set<String>): Set<String> =
     if (keys.none(Corridors::isDirectionKey)) keys else keys.filterNotTo(HashSet(), Corridors::isDirectionKey)

@@ -182,7 +182,10 @@ class SimulationRunner(
         )
 
     private fun patienceLine(scheduler: DefaultScheduler?): List<String> =
-        listOfNotNull(scheduler?.let { "grants_after_park_test_patience: ${it.grantsAfterPatience}" })
+        listOfNotNull(
+            scheduler?.let { "grants_after_park_test_patience: ${it.grantsAfterPatience}" },
+            scheduler?.let { "grants_held_back_for_dead_holes: ${it.deadHolesAvoided}" },
+        )
 
     /** The loopback driver's setting [key] as configured, or `null` without the loopback extension. */
     private fun loopbackSetting(key: String): Any? =

@@ -221,4 +221,62 @@ class DeadlockAvoidanceTest : FunSpec({
         f.allocate(v1, "P9-K", "K", "L")
         v1.granted shouldContainExactly listOf(setOf("P9-K", "K", "L"))
     }
+
+    context("two directed squares that share their one free corner X (the grids' dead hole)") {
+        // Square A: X -> A1 -> A2 -> A3 -> X; square B: X -> B1 -> B2 -> B3 -> X; a way in E -> B2. a1, a2, a3 stand
+        // on A and b1, b3 on B, each bound one step on; a3 and b3 will cross over X into the other square.
+        val model = plant("X-A1", "A1-A2", "A2-A3", "A3-X", "X-B1", "B1-B2", "B2-B3", "B3-X", "E-B2")
+
+        fun squares(): Pair<SchedulerFixture, Map<String, RecordingClient>> {
+            val f = SchedulerFixture(model)
+            val at = mapOf("a1" to "A1", "a2" to "A2", "a3" to "A3", "b1" to "B1", "b3" to "B3", "n" to "E")
+            val clients = at.mapValues { (name, point) ->
+                f.client(name).also { f.scheduler.allocateNow(it, setOf(point)) }
+            }
+            fun claim(name: String, vararg steps: String) =
+                f.scheduler.claim(
+                    clients.getValue(name),
+                    steps.map {
+                        setOf(it.substringBefore(":"), it.substringAfter(":"))
+                    },
+                )
+            claim("a1", "A1-A2:A2")
+            claim("a2", "A2-A3:A3")
+            claim("a3", "A3-X:X", "X-B1:B1")
+            claim("b1", "B1-B2:B2")
+            claim("b3", "B3-X:X", "X-A1:A1")
+            claim("n", "E-B2:B2", "B2-B3:B3")
+            return f to clients
+        }
+
+        test("a vehicle driving into the last free point but one is held back while the corner can still be taken") {
+            val (f, v) = squares()
+
+            // With n on B2 whoever took X would wait, around one square or the other, for itself.
+            f.allocate(v.getValue("n"), "E-B2", "B2")
+
+            v.getValue("n").granted.shouldBeEmpty()
+            f.scheduler.deadHolesAvoided shouldBe 1
+            // a3 takes the corner and drives on into B; now n may come in behind it.
+            f.allocate(v.getValue("a3"), "A3-X", "X")
+            v.getValue("a3").granted shouldContainExactly listOf(setOf("A3-X", "X"))
+            f.free(v.getValue("a3"), "A3")
+            f.allocate(v.getValue("a3"), "X-B1", "B1")
+            f.allocate(v.getValue("b1"), "B1-B2", "B2")
+            v.getValue("b1").granted shouldContainExactly listOf(setOf("B1-B2", "B2"))
+            f.free(v.getValue("b1"), "B1")
+            v.getValue("a3").granted.last() shouldBe setOf("X-B1", "B1")
+        }
+
+        test("without the way in the squares rotate: nothing is held back for a dead hole") {
+            val (f, v) = squares()
+
+            f.allocate(v.getValue("a3"), "A3-X", "X")
+            f.allocate(v.getValue("b1"), "B1-B2", "B2")
+
+            v.getValue("a3").granted shouldContainExactly listOf(setOf("A3-X", "X"))
+            v.getValue("b1").granted shouldContainExactly listOf(setOf("B1-B2", "B2"))
+            f.scheduler.deadHolesAvoided shouldBe 0
+        }
+    }
 })
