@@ -7,6 +7,7 @@ import org.ktcs.api.scheduling.Retreat
 import org.ktcs.api.scheduling.Scheduler
 import org.ktcs.api.scheduling.SchedulerClient
 import org.ktcs.kernel.scheduling.TrafficTimers.DEAD_END_RETREAT_MILLIS
+import org.ktcs.kernel.scheduling.TrafficTimers.DEAD_HOLE_PATIENCE_MILLIS
 import org.ktcs.kernel.scheduling.TrafficTimers.HELD_BACK_REPORT_MILLIS
 import org.ktcs.kernel.scheduling.TrafficTimers.PARK_TEST_PATIENCE_MILLIS
 import org.slf4j.LoggerFactory
@@ -361,6 +362,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     }
 
     private fun leavesDeadHole(request: Request, behind: Set<String>): Boolean {
+        val since = deferredSince[request.seq]
+        if (since != null && clock.elapsedMillis() - since >= DEAD_HOLE_PATIENCE_MILLIS) return false
         if (!safety.leavesDeadHole(request.client.name, request.keys, behind, ::requestersOf)) return false
         deadHolesAvoided++
         return true

@@ -130,8 +130,8 @@ internal class RouteSafety(
      * Such a key stays free for good and every vehicle queued on it waits: the grids' two full squares that share
      * their last free corner (developer's guide, "The traffic rule"). Only one-way steps are looked at: on a two-way
      * stretch the look-ahead covers the whole stretch already. The check follows at most [MAX_AHEAD] vehicles ahead.
-     * Only the vehicles that have asked count: counting every vehicle whose next claimed step it is held back more
-     * grants, for more deadlocks through the web API and a longer makespan (developer's guide, section 12).
+     * Only the vehicles that have asked count: two grants may then hold each other back, each for a hole the other
+     * could take, until one of them is retried after a release or its patience ends (developer's guide, section 12).
      */
     fun leavesDeadHole(
         client: String,

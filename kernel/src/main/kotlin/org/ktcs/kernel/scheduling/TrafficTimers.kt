@@ -25,4 +25,11 @@ internal object TrafficTimers {
      * (guide, section 12). The grids never reach it.
      */
     const val PARK_TEST_PATIENCE_MILLIS = 3_000L
+
+    /**
+     * How long (vehicle time) a grant may be held back for a dead hole ([RouteSafety.leavesDeadHole]) before the local
+     * rule alone decides it: a safety valve for two grants each held back for a hole the other could take, or for a
+     * hole only a paused vehicle could take. The vehicle that can take a hole normally does so within a step or two.
+     */
+    const val DEAD_HOLE_PATIENCE_MILLIS = 10_000L
 }

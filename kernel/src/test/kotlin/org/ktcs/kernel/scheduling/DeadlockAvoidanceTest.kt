@@ -3,6 +3,7 @@ package org.ktcs.kernel.scheduling
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldBeEmpty
 import io.kotest.matchers.collections.shouldContainExactly
+import io.kotest.matchers.longs.shouldBeGreaterThan
 import io.kotest.matchers.shouldBe
 import org.ktcs.api.model.Link
 import org.ktcs.api.model.Location
@@ -224,22 +225,28 @@ class DeadlockAvoidanceTest : FunSpec({
 
     context("two directed squares that share their one free corner X (the grids' dead hole)") {
         // Square A: X -> A1 -> A2 -> A3 -> X; square B: X -> B1 -> B2 -> B3 -> X; a way in E -> B2. a1, a2, a3 stand
-        // on A and b1, b3 on B, each bound one step on; a3 and b3 will cross over X into the other square.
+        // on A and b1, b3 on B, each bound one step on; a3 and b3 will cross over X into the other square. x0 holds X
+        // and B2 (a long vehicle on its way out), so n's, a3's and b3's requests wait, in that order, until it leaves.
         val model = plant("X-A1", "A1-A2", "A2-A3", "A3-X", "X-B1", "B1-B2", "B2-B3", "B3-X", "E-B2")
 
         fun squares(): Pair<SchedulerFixture, Map<String, RecordingClient>> {
             val f = SchedulerFixture(model)
-            val at = mapOf("a1" to "A1", "a2" to "A2", "a3" to "A3", "b1" to "B1", "b3" to "B3", "n" to "E")
-            val clients = at.mapValues { (name, point) ->
-                f.client(name).also { f.scheduler.allocateNow(it, setOf(point)) }
+            val at = mapOf(
+                "a1" to setOf("A1"),
+                "a2" to setOf("A2"),
+                "a3" to setOf("A3"),
+                "b1" to setOf("B1"),
+                "b3" to setOf("B3"),
+                "n" to setOf("E"),
+                "x0" to setOf("X", "B2"),
+            )
+            val clients = at.mapValues { (name, points) ->
+                f.client(name).also { f.scheduler.allocateNow(it, points) }
             }
-            fun claim(name: String, vararg steps: String) =
-                f.scheduler.claim(
-                    clients.getValue(name),
-                    steps.map {
-                        setOf(it.substringBefore(":"), it.substringAfter(":"))
-                    },
-                )
+            fun claim(name: String, vararg steps: String) = f.scheduler.claim(
+                clients.getValue(name),
+                steps.map { setOf(it.substringBefore(":"), it.substringAfter(":")) },
+            )
             claim("a1", "A1-A2:A2")
             claim("a2", "A2-A3:A3")
             claim("a3", "A3-X:X", "X-B1:B1")
@@ -249,28 +256,54 @@ class DeadlockAvoidanceTest : FunSpec({
             return f to clients
         }
 
+        // n, a3, b3 and (if [b1Asks]) b1 ask in this order, then x0 leaves.
+        fun SchedulerFixture.askAndClear(v: Map<String, RecordingClient>, b1Asks: Boolean) {
+            allocate(v.getValue("n"), "E-B2", "B2")
+            allocate(v.getValue("a3"), "A3-X", "X")
+            allocate(v.getValue("b3"), "B3-X", "X")
+            if (b1Asks) allocate(v.getValue("b1"), "B1-B2", "B2")
+            free(v.getValue("x0"), "X", "B2")
+        }
+
         test("a vehicle driving into the last free point but one is held back while the corner can still be taken") {
             val (f, v) = squares()
 
-            // With n on B2 whoever took X would wait, around one square or the other, for itself.
-            f.allocate(v.getValue("n"), "E-B2", "B2")
+            // With n on B2 whoever took X would wait, around one square or the other, for itself; a3 can take X.
+            f.askAndClear(v, b1Asks = true)
 
             v.getValue("n").granted.shouldBeEmpty()
-            f.scheduler.deadHolesAvoided shouldBe 1
-            // a3 takes the corner and drives on into B; now n may come in behind it.
-            f.allocate(v.getValue("a3"), "A3-X", "X")
+            f.scheduler.deadHolesAvoided shouldBeGreaterThan 0
             v.getValue("a3").granted shouldContainExactly listOf(setOf("A3-X", "X"))
+            v.getValue("b1").granted shouldContainExactly listOf(setOf("B1-B2", "B2"))
+            // a3 drives on into B as B moves.
             f.free(v.getValue("a3"), "A3")
             f.allocate(v.getValue("a3"), "X-B1", "B1")
-            f.allocate(v.getValue("b1"), "B1-B2", "B2")
-            v.getValue("b1").granted shouldContainExactly listOf(setOf("B1-B2", "B2"))
             f.free(v.getValue("b1"), "B1")
             v.getValue("a3").granted.last() shouldBe setOf("X-B1", "B1")
         }
 
-        test("without the way in the squares rotate: nothing is held back for a dead hole") {
+        test("after the patience the local rule alone decides, so a hold for a paused vehicle cannot stop the fleet") {
+            val (f, v) = squares()
+            f.scheduler.setPaused(v.getValue("a3"), true)
+
+            f.askAndClear(v, b1Asks = false)
+            v.getValue("n").granted.shouldBeEmpty()
+            f.clock.advance(TrafficTimers.DEAD_HOLE_PATIENCE_MILLIS - 1)
+            f.scheduler.retryOverdue()
+            f.clock.drain()
+            v.getValue("n").granted.shouldBeEmpty()
+
+            f.clock.advance(1)
+            f.scheduler.retryOverdue()
+            f.clock.drain()
+
+            v.getValue("n").granted shouldContainExactly listOf(setOf("E-B2", "B2"))
+        }
+
+        test("without a vehicle coming in the squares rotate: nothing is held back for a dead hole") {
             val (f, v) = squares()
 
+            f.free(v.getValue("x0"), "X", "B2")
             f.allocate(v.getValue("a3"), "A3-X", "X")
             f.allocate(v.getValue("b1"), "B1-B2", "B2")
 
