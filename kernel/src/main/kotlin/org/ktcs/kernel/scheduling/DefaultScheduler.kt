@@ -51,8 +51,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     override val grantsHeldBack: Long get() = safety.heldBack + parks.heldBack + deadHolesAvoided
 
     /** Grants held back because they would have left a free point that nobody asking for it could take. */
-    var deadHolesAvoided = 0L
-        private set
+    val deadHolesAvoided: Long get() = safety.deadHolesHeldBack
 
     /** Grants the park test had held back that its patience then left to the local rule alone. */
     var grantsAfterPatience = 0L
@@ -291,9 +290,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
 
     private fun newCorridorSteps() = CorridorSteps(corridors, occupancy.corridorDirections) { claims[it] }
 
-    private fun newSafety(model: PlantModel) = RouteSafety(ExitCorridors(model), {
-        occupancy.holdingKeys(it)
-    }, { occupancy.holdersOf(it) })
+    private fun newSafety(model: PlantModel) =
+        RouteSafety(ExitCorridors(model), { occupancy.holdingKeys(it) }, { occupancy.holdersOf(it) }, ::requestersOf)
 
     // Per step of [client]'s route, its keys and, per corridor it comes into, the need key for the way it heads.
     private fun routeKeys(client: String, route: List<Set<String>>): List<Set<String>> =
@@ -364,9 +362,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     private fun leavesDeadHole(request: Request, behind: Set<String>): Boolean {
         val since = deferredSince[request.seq]
         if (since != null && clock.elapsedMillis() - since >= DEAD_HOLE_PATIENCE_MILLIS) return false
-        if (!safety.leavesDeadHole(request.client.name, request.keys, behind, ::requestersOf)) return false
-        deadHolesAvoided++
-        return true
+        return safety.leavesDeadHole(request.client.name, request.keys, behind)
     }
 
     // The first requests of the clients that ask for [key].

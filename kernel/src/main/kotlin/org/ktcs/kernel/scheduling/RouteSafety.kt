@@ -22,6 +22,7 @@ internal class RouteSafety(
     private val exits: ExitCorridors,
     private val holdings: (String) -> Set<String>,
     private val holders: (String) -> Collection<String>,
+    private val requesters: (key: String) -> Collection<Requester> = { emptyList() },
 ) {
     /** One claimed step; [stop] is the way out of where it ends if the vehicle stops there for an operation. */
     private class Step(val keys: Set<String>, val twoWay: Boolean, val stop: Exit?) {
@@ -34,13 +35,17 @@ internal class RouteSafety(
     private val routes = HashMap<String, ArrayDeque<Step>>()
     private val wayOut = HashMap<String, Exit>()
 
-    // A grant looked at as if made ([leavesDeadHole]): its client holds [Assumed.held] and its route starts after it.
+    // A grant looked at as if made ([leavesDeadHole]): its client holds [Assumed.held].
     private class Assumed(val client: String, val held: Set<String>)
 
     private var assumed: Assumed? = null
 
     /** How many grants were held back because they would have closed a cycle. */
     var heldBack = 0L
+        private set
+
+    /** How many grants were held back because they would have left a dead hole ([leavesDeadHole]). */
+    var deadHolesHeldBack = 0L
         private set
 
     fun isPoint(name: String): Boolean = exits.isPoint(name)
@@ -124,7 +129,7 @@ internal class RouteSafety(
 
     /**
      * Whether granting [keys] to [client] (which passed [mayGrant]) would leave a *dead hole*: a free point or path that
-     * a vehicle in the grantee's way needs next and that another vehicle asking for it ([requesters]) could take now,
+     * a vehicle in the grantee's way needs next and that another vehicle asking for it (`requesters`) could take now,
      * even if the grantee never moved, but that none of them (the grantee included, for its own next step) could take
      * once the grantee has driven there, since each would then wait, through a chain of waits, for itself.
      * Such a key stays free for good and every vehicle queued on it waits: the grids' two full squares that share
@@ -133,31 +138,26 @@ internal class RouteSafety(
      * Only the vehicles that have asked count: two grants may then hold each other back, each for a hole the other
      * could take, until one of them is retried after a release or its patience ends (developer's guide, section 12).
      */
-    fun leavesDeadHole(
-        client: String,
-        keys: Set<String>,
-        behind: Set<String>,
-        requesters: (key: String) -> Collection<Requester>,
-    ): Boolean {
+    fun leavesDeadHole(client: String, keys: Set<String>, behind: Set<String>): Boolean {
         if (keys.any(exits::isTwoWay)) return false
         val held = heldAfter(keys, behind)
-        val after = routes[client]?.let { ArrayDeque(it) }?.also { steps ->
-            val physical = physicalOf(keys)
-            val index = steps.indexOfFirst { it.physical == physical }
-            if (index >= 0) steps.removeAt(index)
-        }
-        val holes = assume(client, held, after) { holesAhead(client) }
+        val physical = physicalOf(keys)
+        val granted = routes[client]?.indexOfFirst { it.physical == physical } ?: -1
+        val holes = assume(client, held, granted) { holesAhead(client) }
         if (holes.isEmpty()) return false
-        val next = after?.firstOrNull()?.let { Requester(client, it.keys, emptySet()) }
+        val next = routes[client]?.withIndex()?.firstOrNull { it.index != granted }?.value
+            ?.let { Requester(client, it.keys, emptySet()) }
         val safeBefore = HashMap<String, Boolean>()
         val safeAfter = HashMap<String, Boolean>()
-        return holes.any { hole ->
+        val dead = holes.any { hole ->
             val others = requesters(hole).filter { it.client != client }
             val asking = if (next != null && hole in next.keys) others + next else others
             others.none { it.keys.any(exits::isTwoWay) } &&
                 others.any { safeBefore.getOrPut(it.client) { isSafeFor(it, pinned = client) } } &&
-                asking.none { safeAfter.getOrPut(it.client) { assume(client, held, after) { isSafeFor(it) } } }
+                asking.none { safeAfter.getOrPut(it.client) { assume(client, held, granted) { isSafeFor(it) } } }
         }
+        if (dead) deadHolesHeldBack++
+        return dead
     }
 
     private fun isSafeFor(requester: Requester, pinned: String? = null): Boolean =
@@ -180,15 +180,16 @@ internal class RouteSafety(
         return holes
     }
 
-    private inline fun <T> assume(client: String, held: Set<String>, route: ArrayDeque<Step>?, body: () -> T): T {
-        val real = routes[client]
+    // Runs [body] as if [client] held [held] and its claimed step at index [granted] (if any) were granted.
+    private inline fun <T> assume(client: String, held: Set<String>, granted: Int, body: () -> T): T {
+        val route = routes[client]
+        val step = if (granted >= 0) route?.removeAt(granted) else null
         assumed = Assumed(client, held)
-        if (route != null) routes[client] = route
         try {
             return body()
         } finally {
             assumed = null
-            if (real != null) routes[client] = real
+            if (step != null) route?.add(granted, step)
         }
     }
 
