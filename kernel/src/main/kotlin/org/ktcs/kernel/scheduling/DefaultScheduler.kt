@@ -91,7 +91,9 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         claims.remove(client.name)
         safety.unclaim(client.name)
         // Without a route it is bound into no corridor: standing at a corridor's end, it keeps nobody out any more.
-        wake(occupancy.leaveGates(client.name))
+        val left = occupancy.leaveGates(client.name)
+        safety.changed(client.name)
+        wake(left)
         retryDeferred()
     }
 
@@ -138,6 +140,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         safety.remove(client.name)
         releases++
         val released = occupancy.releaseAll(client.name)
+        safety.changed(client.name)
         parks.changed(client.name)
         wake(released)
         retryDeferred()

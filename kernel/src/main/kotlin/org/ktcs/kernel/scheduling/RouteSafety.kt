@@ -30,7 +30,16 @@ internal class RouteSafety(
         val physical: Set<String> = physicalOf(keys)
     }
 
-    private class LookAhead(val required: Set<String>, val options: List<Set<String>>)
+    private class LookAhead(val required: Set<String>, val options: List<Set<String>>) {
+        /** Calls [action] with every key needed: the required ones, then those of each way on. */
+        inline fun forEachKey(action: (String) -> Unit) {
+            required.forEach(action)
+            options.forEach { it.forEach(action) }
+        }
+    }
+
+    // A client's look-ahead as it stands, computed at [version].
+    private class KnownLookAhead(val version: Long, val ahead: LookAhead)
 
     private val routes = HashMap<String, ArrayDeque<Step>>()
     private val wayOut = HashMap<String, Exit>()
@@ -39,6 +48,16 @@ internal class RouteSafety(
     private class Assumed(val client: String, val held: Set<String>)
 
     private var assumed: Assumed? = null
+
+    // Per client, a count of the changes to what it holds, claims or needs at the end (see [Refusal]).
+    private val versions = HashMap<String, Long>()
+    private var changes = 0L
+
+    // Per client, the local rule's last refusal of its grant, if the client has not been granted anything since.
+    private val refusals = HashMap<String, Refusal>()
+
+    // Per client, its look-ahead as it stands: a walk visits the vehicles queued ahead again and again, unchanged.
+    private val lookAheads = HashMap<String, KnownLookAhead>()
 
     /** How many grants were held back because they would have closed a cycle. */
     var heldBack = 0L
@@ -57,6 +76,7 @@ internal class RouteSafety(
      * step, the point where the vehicle stops for an operation at its end (null: it drives on).
      */
     fun claim(client: String, route: List<Set<String>>, stops: List<String?>, end: String?) {
+        changed(client)
         routes[client] = route.zip(stops).mapTo(ArrayDeque()) { (keys, stop) ->
             Step(keys, keys.any(exits::isTwoWay), stop?.let(exits::from))
         }
@@ -73,6 +93,7 @@ internal class RouteSafety(
 
     /** Recomputes the way out of a client without a claim after what it holds changed. */
     fun standing(client: String) {
+        changed(client)
         if (client in routes) return
         val point = holdings(client).singleOrNull(exits::isPoint)
         wayOut[client] = point?.let(exits::from) ?: Exit.NONE
@@ -81,10 +102,14 @@ internal class RouteSafety(
     fun remove(client: String) {
         routes.remove(client)
         wayOut.remove(client)
+        changed(client)
+        refusals.remove(client)
     }
 
     /** [client] was granted [keys]: the first claimed step with exactly these keys is no longer needed. */
     fun granted(client: String, keys: Set<String>) {
+        changed(client)
+        refusals.remove(client)
         val route = routes[client] ?: return
         val physical = physicalOf(keys)
         val index = route.indexOfFirst { it.physical == physical }
@@ -97,17 +122,49 @@ internal class RouteSafety(
      * drives, so waits for that resolve by themselves.
      */
     fun mayGrant(client: String, keys: Set<String>, behind: Set<String>): Boolean {
-        if (!isSafe(client, keys, behind)) {
-            heldBack++
-            return false
+        val known = refusals[client]
+        if (known == null || !known.stillHolds(keys, behind)) {
+            val held = heldAfter(keys, behind)
+            val walk = Walk(client, held)
+            if (!walk.isBlocked(lookAhead(client, keys, held), client)) {
+                refusals.remove(client)
+                return true
+            }
+            refusals[client] = Refusal(keys, behind, walk.reached() + client)
         }
-        return true
+        heldBack++
+        return false
+    }
+
+    /**
+     * Tells the check that what [client] holds has changed; its claim, grants and way out it sees itself. Whatever
+     * changes what a client holds must call this before the next check, or a refusal or look-ahead kept may be stale.
+     */
+    fun changed(client: String) {
+        versions[client] = ++changes
+    }
+
+    private fun version(client: String): Long = versions[client] ?: 0L
+
+    /**
+     * A refused grant of [keys] (with [behind]) and the vehicles its check looked at ([witnesses]), each with its
+     * version then. The refusal holds until one of them changes what it holds, claims or needs at the end: another
+     * vehicle holds nothing that any of them needs, and if it takes something they need, the check's vehicles can only
+     * move less (it finds the vehicles that can move as a least fixpoint, and a key more held frees nobody). So a
+     * release elsewhere, the most common reason for a retry, costs a look at the versions instead of a walk.
+     */
+    private inner class Refusal(val keys: Set<String>, val behind: Set<String>, witnesses: Collection<String>) {
+        private val names = witnesses.toTypedArray()
+        private val at = LongArray(names.size) { version(names[it]) }
+
+        fun stillHolds(keys: Set<String>, behind: Set<String>): Boolean =
+            keys == this.keys && behind == this.behind && names.indices.all { version(names[it]) == at[it] }
     }
 
     // [pinned]: a vehicle that stays where it stands, whatever it needs.
     private fun isSafe(client: String, keys: Set<String>, behind: Set<String>, pinned: String? = null): Boolean {
         val held = heldAfter(keys, behind)
-        return !Walk(client, held, pinned).isBlocked(lookAhead(client, skipping = keys, holding = held), client)
+        return !Walk(client, held, pinned).isBlocked(lookAhead(client, keys, held), client)
     }
 
     /**
@@ -115,7 +172,7 @@ internal class RouteSafety(
      * count only when every one of them is held, as in the check itself: one free way on is a way out.
      */
     fun blockersAfter(client: String, keys: Set<String>, behind: Set<String>): Map<String, Set<String>> {
-        val ahead = lookAhead(client, skipping = keys, holding = heldAfter(keys, behind))
+        val ahead = lookAhead(client, keys, heldAfter(keys, behind))
         val blockers = HashMap<String, MutableSet<String>>()
         fun note(key: String) = holders(key).filter { it != client }.forEach { blockers.getOrPut(it, ::HashSet) += key }
         ahead.required.forEach(::note)
@@ -170,8 +227,7 @@ internal class RouteSafety(
         val seen = hashSetOf(client)
         val queue = ArrayDeque(listOf(client))
         while (queue.isNotEmpty() && seen.size <= MAX_AHEAD) {
-            val ahead = lookAhead(queue.removeFirst())
-            for (key in ahead.required + ahead.options.flatten()) {
+            lookAhead(queue.removeFirst()).forEachKey { key ->
                 val keyHolders = holdersOf(key)
                 if (keyHolders.isEmpty() && holders(key).isEmpty()) holes += key
                 for (holder in keyHolders) if (seen.add(holder)) queue += holder
@@ -215,7 +271,9 @@ internal class RouteSafety(
         val walk = Walk(client, holdings(client))
         val ahead = lookAhead(client)
         if (!walk.isBlocked(ahead, client)) return emptySet()
-        return (ahead.required + ahead.options.flatten()).filterTo(HashSet()) { walk.isTaken(it, client) }
+        val blocked = HashSet<String>()
+        ahead.forEachKey { if (walk.isTaken(it, client)) blocked += it }
+        return blocked
     }
 
     /**
@@ -238,11 +296,16 @@ internal class RouteSafety(
         } finally {
             if (oldRoute == null) routes.remove(client) else routes[client] = oldRoute
             if (oldWayOut == null) wayOut.remove(client) else wayOut[client] = oldWayOut
+            changed(client)
         }
     }
 
     /** What [client] needs next as deadlock avoidance sees it, for diagnostics. */
-    fun needs(client: String): Set<String> = lookAhead(client).let { it.required + it.options.flatten() }
+    fun needs(client: String): Set<String> {
+        val needs = HashSet<String>()
+        lookAhead(client).forEachKey(needs::add)
+        return needs
+    }
 
     /**
      * One check: which vehicles could never move again while [grantee] holds [held] and stands. The vehicles near
@@ -258,6 +321,10 @@ internal class RouteSafety(
         private val pinned: String? = null,
     ) {
         private val waiting = HashSet<String>()
+        private var near: Map<String, LookAhead> = emptyMap()
+
+        /** The vehicles the grantee's check looked at: those whose needs its needs lead to. */
+        fun reached(): Set<String> = near.keys
 
         fun isBlocked(ahead: LookAhead, self: String): Boolean {
             if (self == grantee) settle(ahead)
@@ -275,7 +342,7 @@ internal class RouteSafety(
             val near = LinkedHashMap<String, LookAhead>()
             val queue = ArrayDeque<String>()
             fun reach(ahead: LookAhead) {
-                for (key in ahead.required + ahead.options.flatten()) {
+                ahead.forEachKey { key ->
                     for (holder in holdersOf(key)) {
                         if (holder != grantee && holder !in near) {
                             near[holder] = lookAhead(holder)
@@ -286,6 +353,7 @@ internal class RouteSafety(
             }
             reach(start)
             while (queue.isNotEmpty()) reach(near.getValue(queue.removeFirst()))
+            this.near = near
             waiting += near.keys
             val order = near.keys.reversed()
             do {
@@ -300,6 +368,14 @@ internal class RouteSafety(
         }
     }
 
+    // [client]'s look-ahead as it stands, kept until it changes (a grant looked at as if made is not kept).
+    private fun lookAhead(client: String): LookAhead {
+        if (assumed?.client == client) return lookAhead(client, null, holdingsOf(client))
+        val version = version(client)
+        lookAheads[client]?.takeIf { it.version == version }?.let { return it.ahead }
+        return lookAhead(client, null, holdings(client)).also { lookAheads[client] = KnownLookAhead(version, it) }
+    }
+
     // The next step, every following step while on a two-way stretch or inside what the client holds anyway (a
     // SINGLE_VEHICLE_ONLY block it is in: its real next need is the first step out of it), and the way out at the end
     // of the claim. A stop for an operation on the way ends the look-ahead with the way out of that stop: a vehicle
@@ -307,11 +383,7 @@ internal class RouteSafety(
     // [holding]; a grant into a dead-end bay it leaves over a two-way path (a station stub or park bay beside an aisle)
     // is judged by the way out of the bay, as any other stop: the way on after it is judged when it asks to come out,
     // once the vehicles it let pass have gone. Stops left over one-way lanes keep the way on (the grids' stations).
-    private fun lookAhead(
-        client: String,
-        skipping: Set<String>? = null,
-        holding: Set<String> = holdingsOf(client),
-    ): LookAhead {
+    private fun lookAhead(client: String, skipping: Set<String>?, holding: Set<String>): LookAhead {
         val exit = wayOut[client] ?: Exit.NONE
         val route = routes[client] ?: return LookAhead(exit.required, exit.options)
         val ahead = HashSet<String>()
