@@ -28,13 +28,20 @@ internal class BlockIndex(private val model: PlantModel) {
      * with a second block excludes that block's users anyway, because their requests are expanded too.
      */
     fun expand(resources: Set<String>): Set<String> {
+        if (single.isEmpty() || resources.none(single::containsKey)) return resources
         val blocks = resources.flatMap { singleBlocksOf(it) }
         if (blocks.isEmpty()) return resources
         return blocks.flatMapTo(LinkedHashSet(resources)) { it.members }
     }
 
     /** The SAME_DIRECTION_ONLY blocks [resources] touch, each with the direction the resources enter it in. */
-    fun entries(resources: Set<String>): List<BlockEntry> = resources
+    fun entries(resources: Set<String>): List<BlockEntry> = if (resources.none(sameDirection::containsKey)) {
+        emptyList()
+    } else {
+        entriesOf(resources)
+    }
+
+    private fun entriesOf(resources: Set<String>): List<BlockEntry> = resources
         .flatMap { sameDirectionBlocksOf(it) }
         .distinctBy { it.name }
         .map { BlockEntry(it, entryDirection(it, resources)) }

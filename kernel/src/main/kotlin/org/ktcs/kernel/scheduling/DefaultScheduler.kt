@@ -302,7 +302,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
 
     private fun keysOf(resources: Set<String>): Set<String> {
         val expanded = blocks.expand(resources)
-        return expanded + blocks.entries(expanded).map { it.block.name }
+        val entries = blocks.entries(expanded)
+        return if (entries.isEmpty()) expanded else expanded + entries.map { it.block.name }
     }
 
     // Grants held back for safety may become safe after any change elsewhere; each retry costs one reachability walk.

@@ -11,8 +11,9 @@ import org.slf4j.LoggerFactory
  * - each client's standing is kept until the scheduler reports a change of it ([changed]);
  * - once the fleet as it stands is known to be safe, a state that differs from it in a few vehicles is safe if those
  *   can be taken off first, one after the other ([ParkSafety.canLeave]: a search along their way out): without them
- *   the rest is a part of a safe fleet, and a part of a safe fleet is safe (fewer vehicles hold fewer points). Only
- *   when that fails does the test walk the plant;
+ *   the rest is a part of a safe fleet, and a part of a safe fleet is safe (fewer vehicles hold fewer points). Where
+ *   one of them is shut in, a few unchanged vehicles standing in its way may be taken off before it (the rest is still
+ *   a part of the safe fleet). Only when that fails does the test walk the plant;
  * - a refusal is kept with the vehicles that trapped each other ([ParkSafety.stuck]): it holds without a new test until
  *   one of them changes, since nothing the others do can free them.
  *
@@ -45,6 +46,9 @@ internal class ParkGuard(
     private val moved = LinkedHashSet<String>()
 
     private val refusals = HashMap<String, Refusal>()
+
+    // Where the searches of vehicles that could not be taken off ran into others.
+    private val blocked = IntStack()
 
     /** How many grants were held back because the state after them would not have been safe. */
     var heldBack = 0L
@@ -100,30 +104,55 @@ internal class ParkGuard(
         return knownSafe
     }
 
-    // Whether [vehicles], all of the fleet as it stands, can be taken off one after the other before anybody else.
-    private fun canLeaveFirst(vehicles: List<Standing>): Boolean {
-        val left = ArrayList<Standing>(vehicles.size)
-        var waiting = vehicles
-        while (waiting.isNotEmpty()) {
-            val leaving = waiting.filter { parks.canLeave(it, holders) }
-            if (leaving.isEmpty()) break
-            leaving.forEach { count(it, -1) }
-            left += leaving
-            waiting = waiting - leaving.toSet()
-        }
-        left.forEach { count(it, +1) }
-        return waiting.isEmpty()
-    }
+    // Whether [vehicles], all of the fleet as it stands, can be taken off one after the other before the others that
+    // have not changed since the fleet was last known safe, helped by a few of those (see the class).
+    private fun canLeaveFirst(vehicles: List<Standing>): Boolean = canTakeOff(vehicles)
 
-    // Whether [grantee] could be taken off first if it stood so instead of as it stands.
+    // Whether [grantee] could be taken off first (helped by a few others) if it stood so instead of as it stands.
     private fun canLeaveInstead(grantee: Standing): Boolean {
         val now = standings[grantee.name]
         now?.let { count(it, -1) }
         count(grantee, +1)
-        val leaves = parks.canLeave(grantee, holders)
+        val leaves = canTakeOff(listOf(grantee))
         count(grantee, -1)
         now?.let { count(it, +1) }
         return leaves
+    }
+
+    // Whether [targets] can be taken off one after the other, as [holders] counts the fleet, where at most HELPERS
+    // tries take another vehicle off first that stands where a shut-in target's way out runs into it.
+    private fun canTakeOff(targets: List<Standing>): Boolean {
+        val names = targets.mapTo(HashSet()) { it.name }
+        val left = ArrayList<Standing>(targets.size)
+        var waiting = targets
+        var tries = HELPERS
+        try {
+            while (waiting.isNotEmpty()) {
+                blocked.clear()
+                val leaving = waiting.filter { parks.canLeave(it, holders, blocked) }
+                if (leaving.isNotEmpty()) {
+                    leaving.forEach { count(it, -1) }
+                    left += leaving
+                    waiting = waiting - leaving.toSet()
+                    continue
+                }
+                val helper = inTheWay(names, left).firstOrNull { tries-- > 0 && parks.canLeave(it, holders) }
+                    ?: return false
+                count(helper, -1)
+                left += helper
+            }
+            return true
+        } finally {
+            left.forEach { count(it, +1) }
+        }
+    }
+
+    // The vehicles other than [targets] and those taken off already that hold a point in [blocked].
+    private fun inTheWay(targets: Set<String>, left: List<Standing>): Sequence<Standing> {
+        val points = HashSet<Int>()
+        blocked.forEach { points += it }
+        return standings.values.asSequence()
+            .filter { it.name !in targets && it !in left && it.points.any(points::contains) }
     }
 
     private fun isOff(vehicles: Int): Boolean {
@@ -170,12 +199,21 @@ internal class ParkGuard(
     private fun version(client: String): Long = changedAt[client] ?: 0L
 
     private fun standing(client: String, at: Int, holds: Set<String>): Standing {
+        if (holds.none(inBlock)) return Standing(client, at, indices(holds), intArrayOf(at))
         val exits = holds.filter(inBlock).map(parks::pointIndex).filter { it >= 0 && it != at }
-        return Standing(client, at, indices(holds), if (exits.isEmpty()) intArrayOf(at) else (exits + at).toIntArray())
+        return Standing(client, at, indices(holds), (exits + at).toIntArray())
     }
 
-    private fun indices(keys: Set<String>): IntArray =
-        keys.asSequence().map(parks::pointIndex).filter { it >= 0 }.toList().toIntArray()
+    // The points among [keys], as indices.
+    private fun indices(keys: Set<String>): IntArray {
+        val points = IntArray(keys.size)
+        var count = 0
+        for (key in keys) {
+            val point = parks.pointIndex(key)
+            if (point >= 0) points[count++] = point
+        }
+        return if (count == points.size) points else points.copyOf(count)
+    }
 
     // A refused grant and the other vehicles that trapped it, each with its version then.
     private inner class Refusal(val grantee: Standing, val trap: List<Pair<String, Long>>) {
@@ -183,6 +221,8 @@ internal class ParkGuard(
     }
 
     private companion object {
+        // How many vehicles in the way a cheap test tries to take off first before the test walks the plant.
+        private const val HELPERS = 8
         private val log = LoggerFactory.getLogger(ParkGuard::class.java)
     }
 }

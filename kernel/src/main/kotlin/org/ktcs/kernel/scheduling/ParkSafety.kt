@@ -96,15 +96,17 @@ internal class ParkSafety(model: PlantModel) {
      * Whether [vehicle] could be taken off the lanes first, while [holders] counts per point the vehicles holding it
      * (including [vehicle]): it is on a park point or where none can be reached, or one of its exits leads to a point
      * from which a way over free points ends in a free park point. A search nearest-to-a-park-point first, so on free
-     * lanes it costs the way out, not the plant.
+     * lanes it costs the way out, not the plant. If it cannot, [blocked] (when given) gets the held points where the
+     * search ran into other vehicles.
      */
-    fun canLeave(vehicle: Standing, holders: IntArray): Boolean {
+    fun canLeave(vehicle: Standing, holders: IntArray, blocked: IntStack? = null): Boolean {
         if (isPark[vehicle.front] || !canPark(vehicle.front)) return true
         val search = buffers.search
         val seen = buffers.seen
         val mark = ++buffers.searches
         for (exit in vehicle.exits) {
             for (start in towardPark[exit]) {
+                if (holders[start] > 0) blocked?.push(start)
                 if (holders[start] > 0 || seen[start] == mark) continue
                 seen[start] = mark
                 search.push(start)
@@ -116,6 +118,7 @@ internal class ParkSafety(model: PlantModel) {
             val next = towardPark[point]
             for (i in next.indices.reversed()) {
                 val candidate = next[i]
+                if (holders[candidate] > 0) blocked?.push(candidate)
                 if (holders[candidate] > 0 || seen[candidate] == mark) continue
                 seen[candidate] = mark
                 search.push(candidate)
