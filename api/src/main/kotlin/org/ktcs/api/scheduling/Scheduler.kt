@@ -53,6 +53,12 @@ public interface Scheduler : KernelComponent {
     /** What every client holds, by client name. */
     public fun allocations(): Map<String, Set<String>>
 
+    /**
+     * What the client named [client] holds: its entry of [allocations]. A scheduler that can answer for one client
+     * without copying every client's holdings should: the kernel's watchdog asks this of a few vehicles per check.
+     */
+    public fun allocationsOf(client: String): Set<String> = allocations()[client].orEmpty()
+
     /** What every waiting client asked for and has not got yet, by client name, oldest request first. */
     public fun pendingAllocations(): Map<String, List<Set<String>>>
 

@@ -29,7 +29,7 @@ internal class Retreats(private val kernel: KernelCore) {
         scheduler.retryOverdue()
         if (lastSent.size > 64) lastSent.values.removeIf { checks - it >= COOLDOWN_CHECKS }
         sideStepsTaken.forgetOld(checks)
-        targets.update(checks, scheduler::allocations)
+        targets.update(checks, scheduler::allocationsOf)
         val ready = { vehicle: String -> lastSent[vehicle]?.let { checks - it < COOLDOWN_CHECKS } != true }
         // Every vehicle that can retreat now, each to a bay of its own: one per check was too few where most of the
         // fleet is held back and a check spans many moves (a warehouse at time factor 100 stalled through the web API).
@@ -124,11 +124,10 @@ private class RetreatTargets {
     }
 
     /** Forgets the targets reached and left again, and those sent too long ago, by what each vehicle holds now. */
-    fun update(check: Long, allocations: () -> Map<String, Set<String>>) {
+    fun update(check: Long, holdingsOf: (String) -> Set<String>) {
         if (targets.isEmpty()) return
-        val holdings = allocations()
         targets.entries.removeIf { (vehicle, target) ->
-            val inside = target.park in holdings[vehicle].orEmpty()
+            val inside = target.park in holdingsOf(vehicle)
             if (inside) target.reached = true
             (target.reached && !inside) || check - target.sentAt >= MAX_CHECKS
         }

@@ -157,6 +157,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
 
     override fun allocations(): Map<String, Set<String>> = occupancy.snapshot()
 
+    override fun allocationsOf(client: String): Set<String> = occupancy.heldBy(client)
+
     override fun pendingAllocations(): Map<String, List<Set<String>>> = pending.snapshot()
 
     /** The clients whose next grant deadlock avoidance holds back now (until something is freed that makes it safe). */

@@ -56,6 +56,9 @@ internal class Occupancy(private val blocks: BlockIndex, private val corridors: 
 
     fun snapshot(): Map<String, Set<String>> = held.mapValues { it.value.toSet() }
 
+    /** What [client] holds, as a copy. */
+    fun heldBy(client: String): Set<String> = held[client]?.toSet().orEmpty()
+
     fun mayTake(client: String, request: Request): Boolean =
         request.expanded.all { isAvailable(it, client) } &&
             request.entries.all { directions.admits(it, client) } &&

@@ -19,6 +19,20 @@ class DefaultSchedulerTest : FunSpec({
         v1.granted shouldContainExactly listOf(setOf("A", "A-B"))
     }
 
+    test("what one client holds is its entry of the allocations, a copy that later grants leave as it was") {
+        val f = SchedulerFixture()
+        val (v1, v2) = f.client("v1") to f.client("v2")
+        f.allocate(v1, "A")
+        f.allocate(v2, "B")
+
+        val held = f.scheduler.allocationsOf("v1")
+        held shouldBe f.scheduler.allocations().getValue("v1")
+        f.allocate(v1, "C")
+        held shouldBe setOf("A")
+        f.scheduler.allocationsOf("v1") shouldBe setOf("A", "C")
+        f.scheduler.allocationsOf("nobody") shouldBe emptySet()
+    }
+
     test("a request for held resources waits and is granted once they are freed") {
         val f = SchedulerFixture()
         val (v1, v2) = f.client("v1") to f.client("v2")
