@@ -41,8 +41,8 @@ class RouteSafetyIncrementalTest : FunSpec({
 })
 
 /**
- * Up to [VEHICLES] vehicles on the grid, each holding the point it stands on (and, after a grant, the path and point it was
- * granted) and claiming a random way on. Every change is told to the check under test as the scheduler tells it.
+ * Up to [VEHICLES] vehicles on the grid, each holding the point it stands on (and, after a grant, the path and point it
+ * was granted) and claiming a random way on. Every change is told to the check under test as the scheduler tells it.
  */
 private class RouteFleet(
     private val random: Random,
