@@ -3,42 +3,66 @@ package org.ktcs.kernel.scheduling
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.ints.shouldBeGreaterThan
 import io.kotest.matchers.shouldBe
-import org.ktcs.api.model.Path
+import org.ktcs.api.model.PlantModel
 import org.ktcs.kernel.simulation.TrafficGrid
+import org.ktcs.kernel.simulation.WarehousePlant
 import kotlin.random.Random
 
 /**
  * [RouteSafety] keeps the local rule's refusals and the vehicles' look-aheads from check to check: on random fleets
- * on a traffic grid, changed one step at a time (claims, grants, releases, vehicles leaving) while every vehicle asks
+ * on a traffic grid and on a warehouse, changed one step at a time (claims, grants, releases, vehicles leaving) while every vehicle asks
  * for its next step again and again (as the scheduler retries the grants it held back), it must answer exactly as a
  * check built from scratch for each question.
  */
 class RouteSafetyIncrementalTest : FunSpec({
-    val model = TrafficGrid(4, 4, 4).build()
-    val exits = ExitCorridors(model)
-    val pathsFrom = model.paths.filter { it.maxVelocity > 0 }.groupBy { it.sourcePoint }
+    test("on a one-way grid, the check that keeps refusals and look-aheads answers as a check from scratch does") {
+        val (refused, allowed) = compareWithScratch(TrafficGrid(4, 4, 4).build(), seeds = 100)
+        refused shouldBeGreaterThan 300
+        allowed shouldBeGreaterThan 1_000
+    }
 
-    test("the check that keeps refusals and look-aheads answers every grant as a check from scratch does") {
-        var refused = 0
-        var allowed = 0
-        for (seed in 1..100) {
-            val fleet = RouteFleet(Random(seed), model.points.map { it.name }, pathsFrom)
-            val live = RouteSafety(exits, fleet::holdingsOf, fleet::holdersOf)
-            repeat(500) {
-                fleet.changeOne(live)
-                for ((client, route) in fleet.routes) {
-                    val next = route.firstOrNull() ?: continue
-                    if (fleet.holdersOf(next).any { it != client }) continue
-                    val expected = fleet.scratch(exits).mayGrant(client, next, emptySet())
-                    live.mayGrant(client, next, emptySet()) shouldBe expected
-                    if (expected) allowed++ else refused++
-                }
-            }
-        }
+    // Two-way aisles and dead-end stubs: look-aheads run along the aisles and end with the ways out of the stubs.
+    test("on a warehouse's two-way aisles, it answers as a check from scratch does") {
+        val (refused, allowed) = compareWithScratch(WarehousePlant(2, 5, 4).build(), seeds = 60)
         refused shouldBeGreaterThan 300
         allowed shouldBeGreaterThan 1_000
     }
 })
+
+// Asks every vehicle of random fleets on [model] for its next step again and again while the fleet changes one step
+// at a time; returns how many grants were refused and allowed, each answer checked against a check from scratch.
+private fun compareWithScratch(model: PlantModel, seeds: Int): Pair<Int, Int> {
+    val exits = ExitCorridors(model)
+    val pathsFrom = HashMap<String, MutableList<Pair<String, String>>>()
+    for (path in model.paths) {
+        if (path.maxVelocity > 0) {
+            pathsFrom.getOrPut(
+                path.sourcePoint,
+                ::ArrayList,
+            ) += path.name to path.destinationPoint
+        }
+        if (path.maxReverseVelocity > 0) {
+            pathsFrom.getOrPut(path.destinationPoint, ::ArrayList) += path.name to path.sourcePoint
+        }
+    }
+    var refused = 0
+    var allowed = 0
+    for (seed in 1..seeds) {
+        val fleet = RouteFleet(Random(seed), model.points.map { it.name }, pathsFrom)
+        val live = RouteSafety(exits, fleet::holdingsOf, fleet::holdersOf)
+        repeat(500) {
+            fleet.changeOne(live)
+            for ((client, route) in fleet.routes) {
+                val next = route.firstOrNull() ?: continue
+                if (fleet.holdersOf(next).any { it != client }) continue
+                val expected = fleet.scratch(exits).mayGrant(client, next, emptySet())
+                live.mayGrant(client, next, emptySet()) shouldBe expected
+                if (expected) allowed++ else refused++
+            }
+        }
+    }
+    return refused to allowed
+}
 
 /**
  * Up to [VEHICLES] vehicles on the grid, each holding the point it stands on (and, after a grant, the path and point it
@@ -47,7 +71,7 @@ class RouteSafetyIncrementalTest : FunSpec({
 private class RouteFleet(
     private val random: Random,
     private val points: List<String>,
-    private val pathsFrom: Map<String, List<Path>>,
+    private val pathsFrom: Map<String, List<Pair<String, String>>>,
 ) {
     val holds = HashMap<String, MutableSet<String>>()
     private val fronts = HashMap<String, String>()
@@ -103,9 +127,9 @@ private class RouteFleet(
         val route = ArrayDeque<Set<String>>()
         var at = from
         repeat(1 + random.nextInt(6)) {
-            val path = pathsFrom[at]?.randomOrNull(random) ?: return@repeat
-            route += setOf(path.name, path.destinationPoint)
-            at = path.destinationPoint
+            val (path, to) = pathsFrom[at]?.randomOrNull(random) ?: return@repeat
+            route += setOf(path, to)
+            at = to
         }
         if (route.isEmpty()) return
         routes[client] = route
