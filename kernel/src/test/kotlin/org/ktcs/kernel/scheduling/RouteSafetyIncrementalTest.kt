@@ -10,9 +10,9 @@ import kotlin.random.Random
 
 /**
  * [RouteSafety] keeps the local rule's refusals and the vehicles' look-aheads from check to check: on random fleets
- * on a traffic grid and on a warehouse, changed one step at a time (claims, grants, releases, vehicles leaving) while every vehicle asks
- * for its next step again and again (as the scheduler retries the grants it held back), it must answer exactly as a
- * check built from scratch for each question.
+ * on a traffic grid and on a warehouse, changed one step at a time (claims, grants, releases, vehicles leaving) while
+ * every vehicle asks for its next step again and again (as the scheduler retries the grants it held back), it must
+ * answer exactly as a check built from scratch for each question.
  */
 class RouteSafetyIncrementalTest : FunSpec({
     test("on a one-way grid, the check that keeps refusals and look-aheads answers as a check from scratch does") {
