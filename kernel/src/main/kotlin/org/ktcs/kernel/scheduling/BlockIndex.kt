@@ -34,6 +34,13 @@ internal class BlockIndex(private val model: PlantModel) {
         return blocks.flatMapTo(LinkedHashSet(resources)) { it.members }
     }
 
+    /** [resources] [expand]ed, plus the names of the SAME_DIRECTION_ONLY blocks they touch: deadlock avoidance's keys. */
+    fun keysOf(resources: Set<String>): Set<String> {
+        val expanded = expand(resources)
+        val entries = entries(expanded)
+        return if (entries.isEmpty()) expanded else expanded + entries.map { it.block.name }
+    }
+
     /** The SAME_DIRECTION_ONLY blocks [resources] touch, each with the direction the resources enter it in. */
     fun entries(resources: Set<String>): List<BlockEntry> = if (resources.none(sameDirection::containsKey)) {
         emptyList()

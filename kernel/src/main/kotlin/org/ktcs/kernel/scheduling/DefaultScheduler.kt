@@ -213,7 +213,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         return safety.blockersAfter(
             request.client.name,
             request.keys,
-            keysOf(request.client.heldAfter(request.resources)),
+            keysBehind(request.client, request.resources),
         )
     }
 
@@ -229,7 +229,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     // A last grant the client no longer holds (it refused it, or gave it back) says nothing about where it goes.
     private fun keptBy(client: String): Set<String> {
         val last = heldLastGrant(client) ?: return occupancy.holdingKeys(client)
-        return last.keys + keysOf(last.client.heldAfter(last.resources))
+        return last.keys + keysBehind(last.client, last.resources)
     }
 
     // The client's last grant if it still holds it; a grant it refused or gave back says nothing about where it is.
@@ -254,7 +254,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
             routeKeys(client.name, resources),
             safety.stopsOf(resources),
             resources.lastOrNull()?.let(safety::pointOf),
-            resources.firstOrNull()?.let { keysOf(client.heldAfter(it)) }.orEmpty(),
+            resources.firstOrNull()?.let { keysBehind(client, it) }.orEmpty(),
         )
 
     /** What [client] still needs as deadlock avoidance sees it: its claimed route ahead and its way out. */
@@ -300,13 +300,11 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
 
     // Per step of [client]'s route, its keys and, per corridor it comes into, the need key for the way it heads.
     private fun routeKeys(client: String, route: List<Set<String>>): List<Set<String>> =
-        corridorSteps.routeKeys(client, route, ::keysOf)
+        corridorSteps.routeKeys(client, route, blocks::keysOf)
 
-    private fun keysOf(resources: Set<String>): Set<String> {
-        val expanded = blocks.expand(resources)
-        val entries = blocks.entries(expanded)
-        return if (entries.isEmpty()) expanded else expanded + entries.map { it.block.name }
-    }
+    // What [client]'s length still covers behind it once it has driven [resources], as deadlock avoidance counts it.
+    private fun keysBehind(client: SchedulerClient, resources: Set<String>): Set<String> =
+        blocks.keysOf(client.heldAfter(resources))
 
     // Grants held back for safety may become safe after any change elsewhere; each retry costs one reachability walk.
     private fun retryDeferred() {
@@ -319,19 +317,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         if (refusedBy.size > deferred.size) refusedBy.keys.retainAll(deferred.mapTo(HashSet()) { it.seq })
     }
 
-    private fun newRequest(client: SchedulerClient, resources: Set<String>): Request {
-        val requested = resources.toSet()
-        val expanded = blocks.expand(requested)
-        return Request(
-            nextSeq++,
-            client,
-            requested,
-            expanded,
-            blocks.entries(expanded),
-            corridorSteps.entries(client.name, requested),
-            corridorSteps.gates(client.name, requested),
-        )
-    }
+    private fun newRequest(client: SchedulerClient, resources: Set<String>): Request =
+        Request.of(nextSeq++, client, resources, blocks, corridorSteps)
 
     private fun wake(keys: Set<String>) {
         if (keys.isNotEmpty()) process(pending.waitingFor(keys))
@@ -344,7 +331,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         while (queue.isNotEmpty()) {
             val request = queue.pollFirst()!!
             if (!pending.isHead(request) || !isGrantable(request)) continue
-            val behind = keysOf(request.client.heldAfter(request.resources))
+            val behind = keysBehind(request.client, request.resources)
             val refusal = when {
                 !safety.mayGrant(request.client.name, request.keys, behind) -> GrantWait.LOCAL_RULE
                 leavesDeadHole(request, behind) -> GrantWait.LOCAL_RULE
@@ -374,7 +361,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     // The first requests of the clients that ask for [key].
     private fun requestersOf(key: String): List<RouteSafety.Requester> =
         pending.waitingFor(setOf(key)).filter { pending.isHead(it) && key in it.keys }.map {
-            RouteSafety.Requester(it.client.name, it.keys, keysOf(it.client.heldAfter(it.resources)))
+            RouteSafety.Requester(it.client.name, it.keys, keysBehind(it.client, it.resources))
         }
 
     // The park test is a preference, not a wall: a grant it has held back for PARK_TEST_PATIENCE_MILLIS is left to the

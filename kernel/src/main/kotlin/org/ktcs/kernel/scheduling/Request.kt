@@ -45,4 +45,27 @@ internal class Request(
         } else {
             keys + (corridors + gates).map { Corridors.needKey(it.block.name, it.direction) }
         }
+
+    companion object {
+        /** [client]'s request number [seq] for [resources], with the blocks and corridors they touch. */
+        fun of(
+            seq: Long,
+            client: SchedulerClient,
+            resources: Set<String>,
+            blocks: BlockIndex,
+            corridorSteps: CorridorSteps,
+        ): Request {
+            val requested = resources.toSet()
+            val expanded = blocks.expand(requested)
+            return Request(
+                seq,
+                client,
+                requested,
+                expanded,
+                blocks.entries(expanded),
+                corridorSteps.entries(client.name, requested),
+                corridorSteps.gates(client.name, requested),
+            )
+        }
+    }
 }

@@ -49,12 +49,10 @@ internal class RouteSafety(
 
     private var assumed: Assumed? = null
 
-    // Per client, a count of the changes to what it holds, claims or needs at the end (see [Refusal]).
-    private val versions = HashMap<String, Long>()
-    private var changes = 0L
+    private val versions = ClientVersions()
 
     // Per client, the local rule's last refusal of its grant, if the client has not been granted anything since.
-    private val refusals = HashMap<String, Refusal>()
+    private val refusals = KeptRefusals(versions)
 
     // Per client, its look-ahead as it stands: a walk visits the vehicles queued ahead again and again, unchanged.
     private val lookAheads = HashMap<String, KnownLookAhead>()
@@ -103,13 +101,13 @@ internal class RouteSafety(
         routes.remove(client)
         wayOut.remove(client)
         changed(client)
-        refusals.remove(client)
+        refusals.forget(client)
     }
 
     /** [client] was granted [keys]: the first claimed step with exactly these keys is no longer needed. */
     fun granted(client: String, keys: Set<String>) {
         changed(client)
-        refusals.remove(client)
+        refusals.forget(client)
         val route = routes[client] ?: return
         val physical = physicalOf(keys)
         val index = route.indexOfFirst { it.physical == physical }
@@ -122,15 +120,14 @@ internal class RouteSafety(
      * drives, so waits for that resolve by themselves.
      */
     fun mayGrant(client: String, keys: Set<String>, behind: Set<String>): Boolean {
-        val known = refusals[client]
-        if (known == null || !known.stillHolds(keys, behind)) {
-            val held = heldAfter(keys, behind)
+        if (!refusals.stillHolds(client, keys, behind)) {
+            val held = keysHeldAfter(keys, behind)
             val walk = Walk(client, held)
             if (!walk.isBlocked(lookAhead(client, keys, held), client)) {
-                refusals.remove(client)
+                refusals.forget(client)
                 return true
             }
-            refusals[client] = Refusal(keys, behind, walk.reached() + client)
+            refusals.keep(client, keys, behind, walk.reached() + client)
         }
         heldBack++
         return false
@@ -140,30 +137,11 @@ internal class RouteSafety(
      * Tells the check that what [client] holds has changed; its claim, grants and way out it sees itself. Whatever
      * changes what a client holds must call this before the next check, or a refusal or look-ahead kept may be stale.
      */
-    fun changed(client: String) {
-        versions[client] = ++changes
-    }
-
-    private fun version(client: String): Long = versions[client] ?: 0L
-
-    /**
-     * A refused grant of [keys] (with [behind]) and the vehicles its check looked at ([witnesses]), each with its
-     * version then. The refusal holds until one of them changes what it holds, claims or needs at the end: another
-     * vehicle holds nothing that any of them needs, and if it takes something they need, the check's vehicles can only
-     * move less (it finds the vehicles that can move as a least fixpoint, and a key more held frees nobody). So a
-     * release elsewhere, the most common reason for a retry, costs a look at the versions instead of a walk.
-     */
-    private inner class Refusal(val keys: Set<String>, val behind: Set<String>, witnesses: Collection<String>) {
-        private val names = witnesses.toTypedArray()
-        private val at = LongArray(names.size) { version(names[it]) }
-
-        fun stillHolds(keys: Set<String>, behind: Set<String>): Boolean =
-            keys == this.keys && behind == this.behind && names.indices.all { version(names[it]) == at[it] }
-    }
+    fun changed(client: String) = versions.changed(client)
 
     // [pinned]: a vehicle that stays where it stands, whatever it needs.
     private fun isSafe(client: String, keys: Set<String>, behind: Set<String>, pinned: String? = null): Boolean {
-        val held = heldAfter(keys, behind)
+        val held = keysHeldAfter(keys, behind)
         return !Walk(client, held, pinned).isBlocked(lookAhead(client, keys, held), client)
     }
 
@@ -172,7 +150,7 @@ internal class RouteSafety(
      * count only when every one of them is held, as in the check itself: one free way on is a way out.
      */
     fun blockersAfter(client: String, keys: Set<String>, behind: Set<String>): Map<String, Set<String>> {
-        val ahead = lookAhead(client, keys, heldAfter(keys, behind))
+        val ahead = lookAhead(client, keys, keysHeldAfter(keys, behind))
         val blockers = HashMap<String, MutableSet<String>>()
         fun note(key: String) = holders(key).filter { it != client }.forEach { blockers.getOrPut(it, ::HashSet) += key }
         ahead.required.forEach(::note)
@@ -197,7 +175,7 @@ internal class RouteSafety(
      */
     fun leavesDeadHole(client: String, keys: Set<String>, behind: Set<String>): Boolean {
         if (keys.any(exits::isTwoWay)) return false
-        val held = heldAfter(keys, behind)
+        val held = keysHeldAfter(keys, behind)
         val physical = physicalOf(keys)
         val granted = routes[client]?.indexOfFirst { it.physical == physical } ?: -1
         val holes = assume(client, held, granted) { holesAhead(client) }
@@ -371,7 +349,7 @@ internal class RouteSafety(
     // [client]'s look-ahead as it stands, kept until it changes (a grant looked at as if made is not kept).
     private fun lookAhead(client: String): LookAhead {
         if (assumed?.client == client) return lookAhead(client, null, holdingsOf(client))
-        val version = version(client)
+        val version = versions.of(client)
         lookAheads[client]?.takeIf { it.version == version }?.let { return it.ahead }
         return lookAhead(client, null, holdings(client)).also { lookAheads[client] = KnownLookAhead(version, it) }
     }
@@ -411,19 +389,3 @@ internal class RouteSafety(
 }
 
 private const val MAX_AHEAD = 64
-
-private fun physicalOf(keys: Set<String>): Set<String> =
-    if (keys.none(Corridors::isDirectionKey)) keys else keys.filterNotTo(HashSet(), Corridors::isDirectionKey)
-
-// What a grantee holds once it has driven up to a grant of [keys]: the step's resources, what its length covers
-// behind ([behind], whose corridor keys the step's own stand for) and, per corridor it heads along, the ways in for
-// vehicles heading the other way.
-private fun heldAfter(keys: Set<String>, behind: Set<String>): Set<String> {
-    if (keys.none(Corridors::isDirectionKey) && behind.none(Corridors::isDirectionKey)) return keys + behind
-    val held = HashSet(physicalOf(keys))
-    held += physicalOf(behind)
-    for (key in keys.filter(Corridors::isDirectionKey)) {
-        held += Corridors.heldKeys(Corridors.blockOfKey(key), Corridors.directionOfKey(key))
-    }
-    return held
-}
