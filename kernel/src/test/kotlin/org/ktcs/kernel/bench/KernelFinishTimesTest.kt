@@ -1,0 +1,48 @@
+package org.ktcs.kernel.bench
+
+import com.sun.net.httpserver.HttpServer
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.shouldBe
+import java.net.InetSocketAddress
+import java.time.Instant
+
+/** The batch's end by the kernel's clock: the latest finish of the batch's finished orders, nothing else. */
+class KernelFinishTimesTest : FunSpec({
+    fun serving(body: String?, test: (BenchClient) -> Unit) {
+        val server = HttpServer.create(InetSocketAddress("127.0.0.1", 0), 0)
+        server.createContext("/v1/transportOrders") { exchange ->
+            val bytes = body?.toByteArray() ?: ByteArray(0)
+            exchange.sendResponseHeaders(if (body == null) 503 else 200, bytes.size.toLong())
+            exchange.responseBody.use { it.write(bytes) }
+        }
+        server.start()
+        try {
+            test(BenchClient("http://127.0.0.1:${server.address.port}/v1"))
+        } finally {
+            server.stop(0)
+        }
+    }
+
+    fun order(name: String, state: String, finished: String) =
+        """{"name":"$name","state":"$state","finishedTime":"$finished","driveOrders":[]}"""
+
+    test("the latest finish of the batch's FINISHED orders; other batches' and unfinished orders do not count") {
+        val list = listOf(
+            order("Batch-a-1", "FINISHED", "2026-11-30T10:00:05Z"),
+            order("Batch-a-2", "FINISHED", "2026-11-30T10:00:09.250Z"),
+            order("Batch-a-3", "FAILED", "2026-11-30T10:00:30Z"),
+            order("Batch-b-1", "FINISHED", "2026-11-30T10:01:00Z"),
+            order("Batch-a-4", "BEING_PROCESSED", "+1000000000-12-31T23:59:59.999999999Z"),
+        ).joinToString(",", "[", "]")
+        serving(list) { client ->
+            KernelFinishTimes.lastFinished(client, "Batch-a-") shouldBe Instant.parse("2026-11-30T10:00:09.250Z")
+        }
+    }
+
+    test("no finished order of the batch, or no answer: no figure") {
+        serving("[${order("Batch-a-1", "FAILED", "2026-11-30T10:00:05Z")}]") { client ->
+            KernelFinishTimes.lastFinished(client, "Batch-a-") shouldBe null
+        }
+        serving(null) { client -> KernelFinishTimes.lastFinished(client, "Batch-a-") shouldBe null }
+    }
+})
