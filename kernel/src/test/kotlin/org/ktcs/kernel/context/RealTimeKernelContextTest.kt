@@ -28,6 +28,19 @@ class RealTimeKernelContextTest : FunSpec({
         context.close()
     }
 
+    test("the kernel thread asks for the highest priority, which the launcher lets the OS apply as root") {
+        val context = RealTimeKernelContext()
+        val ran = CountDownLatch(1)
+        var priority = 0
+        context.schedule(1) {
+            priority = Thread.currentThread().priority
+            ran.countDown()
+        }
+        ran.await()
+        priority shouldBe Thread.MAX_PRIORITY
+        context.close()
+    }
+
     test("an atomic call runs its service calls in one kernel task without blocking the kernel thread") {
         val context = RealTimeKernelContext()
         val ran = mutableListOf<Int>()
