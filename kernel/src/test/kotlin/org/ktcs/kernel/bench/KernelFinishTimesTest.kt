@@ -1,27 +1,13 @@
 package org.ktcs.kernel.bench
 
-import com.sun.net.httpserver.HttpServer
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.shouldBe
-import java.net.InetSocketAddress
 import java.time.Instant
 
 /** The batch's end by the kernel's clock: the latest finish of the batch's finished orders, nothing else. */
 class KernelFinishTimesTest : FunSpec({
-    fun serving(body: String?, test: (BenchClient) -> Unit) {
-        val server = HttpServer.create(InetSocketAddress("127.0.0.1", 0), 0)
-        server.createContext("/v1/transportOrders") { exchange ->
-            val bytes = body?.toByteArray() ?: ByteArray(0)
-            exchange.sendResponseHeaders(if (body == null) 503 else 200, bytes.size.toLong())
-            exchange.responseBody.use { it.write(bytes) }
-        }
-        server.start()
-        try {
-            test(BenchClient("http://127.0.0.1:${server.address.port}/v1"))
-        } finally {
-            server.stop(0)
-        }
-    }
+    fun serving(body: String?, test: (BenchClient) -> Unit) =
+        servingOrderList(if (body == null) 503 else 200, body?.toByteArray() ?: ByteArray(0), test)
 
     fun order(name: String, state: String, finished: String) =
         """{"name":"$name","state":"$state","finishedTime":"$finished","driveOrders":[]}"""
