@@ -37,7 +37,7 @@ class RealTimeKernelContext(private val wallClock: Clock = Clock.systemUTC()) : 
 
     // Runs the queue and the delayed tasks' timers; a timer that fires queues its task like any caller. Its priority
     // is the highest: where the JVM may apply it (the launcher's ThreadPriorityPolicy=1, as root) the vehicles wait
-    // less for the kernel while web clients keep the cores busy (60x60 through the web API, medians: 5.01x to 3.77x
+    // less for the kernel while web clients keep the cores busy (60x60 through the web API, medians: 4.70x to 3.94x
     // the bound).
     private val executor: ScheduledExecutorService = Executors.newSingleThreadScheduledExecutor { runnable ->
         Thread(runnable, "kernel").also {
