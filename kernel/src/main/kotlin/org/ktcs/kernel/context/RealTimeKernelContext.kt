@@ -36,9 +36,8 @@ class RealTimeKernelContext(private val wallClock: Clock = Clock.systemUTC()) : 
     private var kernelThread: Thread? = null
 
     // Runs the queue and the delayed tasks' timers; a timer that fires queues its task like any caller. Its priority
-    // is the highest: where the JVM may apply it (the launcher's ThreadPriorityPolicy=1, as root) the vehicles wait
-    // less for the kernel while web clients keep the cores busy (60x60 through the web API, medians: 4.70x to 3.94x
-    // the bound).
+    // is the highest, which the JVM applies only with -XX:ThreadPriorityPolicy=1 as root (not a default: README,
+    // "Session 25").
     private val executor: ScheduledExecutorService = Executors.newSingleThreadScheduledExecutor { runnable ->
         Thread(runnable, "kernel").also {
             it.priority = Thread.MAX_PRIORITY

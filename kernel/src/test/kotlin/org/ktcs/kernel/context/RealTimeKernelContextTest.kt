@@ -28,7 +28,7 @@ class RealTimeKernelContextTest : FunSpec({
         context.close()
     }
 
-    test("the kernel thread asks for the highest priority, which the launcher lets the OS apply as root") {
+    test("the kernel thread asks for the highest priority (applied by the JVM with ThreadPriorityPolicy=1, as root)") {
         val context = RealTimeKernelContext()
         val ran = CountDownLatch(1)
         var priority = 0
