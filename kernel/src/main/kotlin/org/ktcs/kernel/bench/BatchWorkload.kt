@@ -69,7 +69,11 @@ class BatchWorkload(private val options: BenchOptions, private val figures: Figu
      * the bench's client reads the whole event stream on cores it shares with kTCS and may fall behind it.
      */
     private fun recordKernelMakespan(client: BenchClient, prefix: String, start: Instant, observedWall: Double) {
-        val last = KernelFinishTimes.lastFinished(client, prefix) ?: return
+        val last = try {
+            KernelFinishTimes.lastFinished(client, prefix)
+        } catch (error: IllegalStateException) {
+            return figures.note("makespan_kernel", error.message ?: "no figure")
+        } ?: return figures.note("makespan_kernel", "no finished order of the batch in GET /transportOrders")
         val wall = Duration.between(start, last).toNanos() / OrderPosting.NANOS_PER_SECOND
         figures.record("makespan_kernel_wall_s", wall)
         figures.record("makespan_kernel_simulated_s", wall * options.timeFactor)

@@ -1,7 +1,9 @@
 package org.ktcs.kernel.bench
 
+import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.shouldBe
+import io.kotest.matchers.string.shouldStartWith
 import java.time.Instant
 
 /** The batch's end by the kernel's clock: the latest finish of the batch's finished orders, nothing else. */
@@ -30,5 +32,20 @@ class KernelFinishTimesTest : FunSpec({
             KernelFinishTimes.lastFinished(client, "Batch-a-") shouldBe null
         }
         serving(null) { client -> KernelFinishTimes.lastFinished(client, "Batch-a-") shouldBe null }
+    }
+
+    test("an answer that is no list of orders, or a finish that is no instant, fails with what was wrong") {
+        serving("""{"name":"not a list"}""") { client ->
+            shouldThrow<IllegalStateException> { KernelFinishTimes.lastFinished(client, "Batch-a-") }
+                .message shouldStartWith "GET /transportOrders answered no list of orders"
+        }
+        serving("[${order("Batch-a-1", "FINISHED", "yesterday")}]") { client ->
+            shouldThrow<IllegalStateException> { KernelFinishTimes.lastFinished(client, "Batch-a-") }
+                .message shouldStartWith "GET /transportOrders answered a finishedTime that is no instant"
+        }
+        serving("[{\"name\":") { client ->
+            shouldThrow<IllegalStateException> { KernelFinishTimes.lastFinished(client, "Batch-a-") }
+                .message shouldStartWith "GET /transportOrders answered no list of orders"
+        }
     }
 })
