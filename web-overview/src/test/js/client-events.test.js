@@ -39,3 +39,23 @@ test('an event with every field replaces the object as before', () => {
 
   assert.deepEqual(client.state.get('transportOrders').get('T1').driveOrders, []);
 });
+
+test('a shortened resource list is the list before without its first entries', () => {
+  const client = new KtcsClient();
+  const vehicle = {
+    name: 'V1', currentPosition: 'A', properties: {},
+    claimedResources: [['A-B', 'B'], ['B-C', 'C'], ['C-D', 'D']], allocatedResources: [['A']],
+  };
+  client.receive({ type: 'snapshot', topic: 'vehicles', objects: [vehicle] });
+
+  client.receive({
+    type: 'event', topic: 'vehicles', seq: 1, previous: null,
+    current: { name: 'V1', currentPosition: 'A', allocatedResources: [['A'], ['A-B', 'B']] },
+    unchanged: ['properties'], shortened: { claimedResources: 1 },
+  });
+
+  const now = client.state.get('vehicles').get('V1');
+  assert.deepEqual(now.claimedResources, [['B-C', 'C'], ['C-D', 'D']]);
+  assert.deepEqual(now.allocatedResources, [['A'], ['A-B', 'B']]);
+  assert.deepEqual(vehicle.claimedResources.length, 3, 'the state before is not changed in place');
+});

@@ -20,6 +20,7 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
     private val assignLatencies = ArrayList<Double>()
     private val finalAt = HashMap<String, Long>()
     private val fleet = FleetConflicts()
+    private val allocatedSteps = HashMap<String, List<List<String>>>()
     private var deadlocks = 0
     private var idleVehiclesMoved = 0
     private var missed = 0
@@ -72,7 +73,7 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
     private fun onMessage(message: WatchedMessage) = synchronized(lock) {
         when (message.type) {
             "snapshot" -> onSnapshot(message.topic, message.objects)
-            "event" -> update(message.topic, message.current, message.previous)
+            "event" -> update(message.topic, message.current, message.previous, message.shortened)
             "missed" -> missed++
         }
     }
@@ -82,19 +83,21 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
      * the others' older state would report conflicts that never existed.
      */
     private fun onSnapshot(topic: String?, objects: List<Observed>) {
-        if (topic != "vehicles") return objects.forEach { update(topic, it, null) }
+        if (topic != "vehicles") return objects.forEach { update(topic, it, null, emptyMap()) }
+        allocatedSteps.clear()
         fleet.snapshot(
             objects.mapNotNull { vehicle ->
                 val name = vehicle.name ?: return@mapNotNull null
-                FleetConflicts.Standing(name, vehicle.heldResources(), vehicle.currentPosition)
+                val steps = vehicle.allocatedResources.orEmpty().also { allocatedSteps[name] = it }
+                FleetConflicts.Standing(name, steps.flatten().toSet(), vehicle.currentPosition)
             },
         )
     }
 
-    private fun update(topic: String?, current: Observed?, previous: Observed?) {
+    private fun update(topic: String?, current: Observed?, previous: Observed?, shortened: Map<String, Int>) {
         when (topic) {
             "transportOrders" -> current?.let(::onOrder)
-            "vehicles" -> current?.let(::onVehicle)
+            "vehicles" -> current?.let { onVehicle(it, shortened["allocatedResources"]) }
             "notifications" -> if (previous == null && current != null) onNotification(current)
         }
     }
@@ -117,14 +120,16 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
         }
     }
 
-    private fun onVehicle(vehicle: Observed) {
+    /** A vehicle's change; [dropped] steps of its allocations were passed (the event says so instead of sending them). */
+    private fun onVehicle(vehicle: Observed, dropped: Int?) {
         val name = vehicle.name ?: return
         // Left out as unchanged (the subscription asks for that), the resources are the ones the vehicle held before.
-        val held = if (vehicle.allocatedResources != null) vehicle.heldResources() else fleet.held(name)
+        val before = allocatedSteps[name].orEmpty()
+        val steps = vehicle.allocatedResources ?: dropped?.let { before.drop(it) } ?: before
+        if (steps !== before) allocatedSteps[name] = steps
+        val held = if (steps === before) fleet.held(name) else steps.flatten().toSet()
         fleet.vehicle(FleetConflicts.Standing(name, held, vehicle.currentPosition))
     }
-
-    private fun Observed.heldResources(): Set<String> = allocatedResources.orEmpty().flatten().toSet()
 
     private fun count(message: WatchedMessage, chars: Int) = synchronized(lock) {
         if (message.type != "event") return
@@ -173,9 +178,10 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
             return text
         }
 
-        // As the browser overview subscribes: only a removed object's previous state, no unchanged large fields.
+        // As the browser overview subscribes: only a removed object's previous state, no unchanged large fields,
+        // resource lists that lost their first steps as the number lost.
         const val SUBSCRIPTION =
             """{"type":"subscribe","topics":["vehicles","transportOrders","notifications"],"previous":false,""" +
-                """"omitUnchanged":true}"""
+                """"omitUnchanged":true,"shortenedLists":true}"""
     }
 }

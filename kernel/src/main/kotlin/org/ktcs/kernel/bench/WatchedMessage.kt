@@ -15,6 +15,7 @@ internal class WatchedMessage(
     val objects: List<Observed> = emptyList(),
     val previous: Observed? = null,
     val current: Observed? = null,
+    val shortened: Map<String, Int> = emptyMap(),
 ) {
     /**
      * A vehicle, order or notification: `state` is a vehicle's object or an order's string; `allocatedResources` is

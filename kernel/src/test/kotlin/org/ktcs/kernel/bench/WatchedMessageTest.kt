@@ -53,6 +53,26 @@ class WatchedMessageTest : FunSpec({
         released.current!!.allocatedResources shouldBe emptyList()
     }
 
+    test("allocations that lost their first steps read as the number lost") {
+        val driving = Vehicle(
+            "Vehicle-01",
+            currentPosition = "Point-2",
+            allocatedResources = listOf(setOf("Point-1"), setOf("Point-1 --- Point-2", "Point-2")),
+        )
+        val passed = VehicleEvent(driving, driving.copy(allocatedResources = driving.allocatedResources.drop(1)))
+
+        val bytes = WsTopics.change(passed)!!.eventBytes(
+            1,
+            withPrevious = false,
+            Unchanged.fieldsOf(passed),
+            Unchanged.shortenedOf(passed),
+        )
+        val message = WatchedMessage.parse(bytes.decodeToString())!!
+
+        message.current!!.allocatedResources.shouldBeNull()
+        message.shortened shouldBe mapOf("allocatedResources" to 1)
+    }
+
     test("an order's state is read as its name, and text that is no message as none") {
         val order = TransportOrder(
             "TOrder-01",

@@ -316,6 +316,10 @@ class WebApiTest : FunSpec({
             val second = events[1]
             second["unchanged"]!!.jsonArray.map { it.jsonPrimitive.content } shouldContain "properties"
             second["current"]!!.jsonObject.keys shouldNotContain "properties"
+
+            socket.send("""{"type":"subscribe","topics":["vehicles"],"shortenedLists":true}""")
+            val refused = generateSequence { socket.next() }.first { it["type"]!!.jsonPrimitive.content == "error" }
+            refused["message"]!!.jsonPrimitive.content shouldContain "shortenedLists needs omitUnchanged"
             socket.close()
         } finally {
             application.stop()

@@ -92,7 +92,9 @@ export class KtcsClient {
       this.attempt = 0;
       // Only a removed object's previous state is used (its name), so the others are not sent at all; nor are the
       // large fields that did not change (an order's routes while it advances step by step): applyEvent keeps them.
-      socket.send(JSON.stringify({ type: 'subscribe', topics: TOPICS, previous: false, omitUnchanged: true }));
+      socket.send(JSON.stringify({
+        type: 'subscribe', topics: TOPICS, previous: false, omitUnchanged: true, shortenedLists: true,
+      }));
       this.setConnected(true);
     };
     socket.onmessage = (message) => this.receive(parseJson(message.data));
@@ -143,13 +145,17 @@ export class KtcsClient {
     else this.state.set(topic, new Map(objects.map((object) => [object.name, object])));
   }
 
-  applyEvent({ topic, previous, current, unchanged }) {
+  applyEvent({ topic, previous, current, unchanged, shortened }) {
     const state = this.state.get(topic);
     if (!state) return;
-    // The fields left out as unchanged are put back from the object's state before, so listeners see whole objects.
-    if (unchanged && current && !LIST_TOPICS.has(topic)) {
+    // The fields left out as unchanged are put back from the object's state before, and the lists left out as
+    // shortened are cut from it, so listeners see whole objects.
+    if ((unchanged || shortened) && current && !LIST_TOPICS.has(topic)) {
       const before = state.get(current.name);
-      if (before) for (const field of unchanged) current[field] = before[field];
+      if (before) {
+        for (const field of unchanged ?? []) current[field] = before[field];
+        for (const [field, dropped] of Object.entries(shortened ?? {})) current[field] = before[field].slice(dropped);
+      }
     }
     if (LIST_TOPICS.has(topic)) {
       state.push(current);

@@ -6,11 +6,13 @@ import org.ktcs.api.event.VehicleEvent
 import org.ktcs.api.model.Vehicle
 import org.ktcs.api.order.TransportOrder
 import java.io.ByteArrayOutputStream
+import java.util.concurrent.ConcurrentHashMap
 
 /**
  * The large fields of an event's object that a client keeping the object's latest state already has: an order under
  * way changes its step index many times a second while its drive orders and their routes (most of its JSON) stay as
- * they were, and a driving vehicle reports its position while its claimed route stays. A client that subscribes with
+ * they were, and a driving vehicle reports its position while its claimed route, its bounding box, energy thresholds,
+ * state and layout stay. Fields whose value is shorter than their name in the list are always sent. A client that subscribes with
  * `omitUnchanged` gets events without them, and the list of what was left out (see [withoutFields]).
  */
 internal object Unchanged {
@@ -21,18 +23,56 @@ internal object Unchanged {
         "allocatedResources" to Vehicle::allocatedResources,
         "properties" to Vehicle::properties,
         "acceptableOrderTypes" to Vehicle::acceptableOrderTypes,
+        "boundingBox" to Vehicle::boundingBox,
+        "energyLevelThresholdSet" to Vehicle::energyLevelThresholdSet,
+        "loadHandlingDevices" to Vehicle::loadHandlingDevices,
+        "state" to { it.state to it.stateTimestamp },
+        "procState" to { it.procState to it.procStateTimestamp },
+        "layout" to Vehicle::layout,
     )
     private val orderFields: List<Pair<String, (TransportOrder) -> Any?>> = listOf(
         "driveOrders" to TransportOrder::driveOrders,
         "properties" to TransportOrder::properties,
         "history" to TransportOrder::history,
         "dependencies" to TransportOrder::dependencies,
+        "creationTime" to TransportOrder::creationTime,
+        "deadline" to TransportOrder::deadline,
+        "finishedTime" to TransportOrder::finishedTime,
     )
 
     fun fieldsOf(event: KernelEvent): List<String> = when (event) {
         is VehicleEvent -> same(event.previous, event.current, vehicleFields)
         is TransportOrderEvent -> same(event.previous, event.current, orderFields)
         else -> emptyList()
+    }
+
+    /**
+     * A vehicle's resource lists that are the lists before without their first entries, each with how many went: a
+     * vehicle granted its next step or releasing what it passed loses the head of its claimed or allocated route and
+     * keeps the rest, which a client that has the list before can cut itself (`shortenedLists`).
+     */
+    fun shortenedOf(event: KernelEvent): Map<String, Int> {
+        if (event !is VehicleEvent) return emptyMap()
+        val (before, after) = (event.previous ?: return emptyMap()) to (event.current ?: return emptyMap())
+        val shortened = LinkedHashMap<String, Int>(2)
+        for ((name, read) in resourceLists) {
+            val dropped = droppedFromFront(read(before), read(after))
+            if (dropped > 0) shortened[name] = dropped
+        }
+        return shortened
+    }
+
+    private val resourceLists: List<Pair<String, (Vehicle) -> List<Set<String>>>> = listOf(
+        "claimedResources" to Vehicle::claimedResources,
+        "allocatedResources" to Vehicle::allocatedResources,
+    )
+
+    // How many entries [before] lost from its front to become [after], or 0 if [after] is not such a tail of it.
+    private fun <E> droppedFromFront(before: List<E>, after: List<E>): Int {
+        val dropped = before.size - after.size
+        if (dropped <= 0) return 0
+        for (i in after.indices) if (after[i] != before[i + dropped]) return 0
+        return dropped
     }
 
     private fun <T : Any> same(before: T?, after: T?, fields: List<Pair<String, (T) -> Any?>>): List<String> {
@@ -58,8 +98,8 @@ internal fun rewriteFields(
     omit: Collection<String>,
     replace: Map<String, () -> ByteArray> = emptyMap(),
 ): ByteArray {
-    val omitted = omit.map { utf8("\"$it\":") }
-    val replaced = replace.map { (name, value) -> utf8("\"$name\":") to value }
+    val omitted = omit.map(::keyOf)
+    val replaced = replace.map { (name, value) -> keyOf(name) to value }
     val out = ByteArrayOutputStream(json.size)
     out.write(json[0].toInt())
     var at = 1
@@ -81,6 +121,12 @@ internal fun rewriteFields(
     out.write(CLOSE_BRACE.toInt())
     return out.toByteArray()
 }
+
+// A field's key as it starts the field in the JSON (`"name":`), made once per name: only the objects' own field names
+// come here, so the map stays small.
+private val keys = ConcurrentHashMap<String, ByteArray>()
+
+private fun keyOf(name: String): ByteArray = keys.computeIfAbsent(name) { utf8("\"$it\":") }
 
 private const val QUOTE = '"'.code.toByte()
 private const val BACKSLASH = '\\'.code.toByte()

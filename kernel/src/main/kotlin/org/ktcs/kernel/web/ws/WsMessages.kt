@@ -14,7 +14,9 @@ const val WS_PROTOCOL_VERSION = 1
  * `false` events carry the previous state only for a removed object (else `null`): a client that keeps the latest
  * state of each object needs no more, and the stream is half as long. With [omitUnchanged] an event's `current` leaves
  * out the large fields that did not change (an order's drive orders, a vehicle's claimed and allocated resources, ...)
- * and names them in [WsEvent.unchanged]: the client keeps them from the object's state before.
+ * and names them in [WsEvent.unchanged]: the client keeps them from the object's state before. With [shortenedLists]
+ * as well, a vehicle's resource list that is the list before without its first entries is left out too and
+ * [WsEvent.shortened] says how many entries the client drops from the front of the list it has.
  */
 @Serializable
 data class WsClientMessage(
@@ -22,6 +24,7 @@ data class WsClientMessage(
     val topics: List<String> = emptyList(),
     val previous: Boolean = true,
     val omitUnchanged: Boolean = false,
+    val shortenedLists: Boolean = false,
 )
 
 /** What the server says. */
@@ -41,7 +44,9 @@ data class WsSnapshot(
 
 /**
  * One change, in kernel order: [previous] is `null` for a new object, [current] for a removed one. [unchanged] names the
- * fields left out of [current] because they are as before (only for a client that subscribed with `omitUnchanged`).
+ * fields left out of [current] because they are as before (only for a client that subscribed with `omitUnchanged`);
+ * [shortened] the lists left out because they are the lists before without that many entries at their front (only
+ * for a client that subscribed with `shortenedLists`).
  */
 @Serializable
 @SerialName("event")
@@ -53,6 +58,9 @@ data class WsEvent(
     @OptIn(ExperimentalSerializationApi::class)
     @EncodeDefault(EncodeDefault.Mode.NEVER)
     val unchanged: List<String>? = null,
+    @OptIn(ExperimentalSerializationApi::class)
+    @EncodeDefault(EncodeDefault.Mode.NEVER)
+    val shortened: Map<String, Int>? = null,
     override val v: Int = WS_PROTOCOL_VERSION,
 ) : WsServerMessage
 

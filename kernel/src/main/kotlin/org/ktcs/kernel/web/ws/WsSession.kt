@@ -35,6 +35,7 @@ class WsSession internal constructor(
     private var topics = emptySet<WsTopic>()
     private var withPrevious = true
     private var omitUnchanged = false
+    private var shortenedLists = false
     private var sequence = 0L
 
     suspend fun run() = coroutineScope {
@@ -47,6 +48,7 @@ class WsSession internal constructor(
                 topics = message.topics.mapNotNullTo(LinkedHashSet(), WsTopic::of)
                 withPrevious = message.previous
                 omitUnchanged = message.omitUnchanged
+                shortenedLists = message.shortenedLists
                 feed = launch { streamForever() }
             }
         } catch (error: FrameTooBigException) {
@@ -67,6 +69,9 @@ class WsSession internal constructor(
         }
         if (message.type != "subscribe") {
             return null.also { send(WsError("unknown message type '${message.type}'; expected 'subscribe'")) }
+        }
+        if (message.shortenedLists && !message.omitUnchanged) {
+            return null.also { send(WsError("shortenedLists needs omitUnchanged: the client keeps the lists it cuts")) }
         }
         if (message.topics.isEmpty()) {
             return null.also { send(WsError("subscribe needs topics, one or more of $KNOWN_TOPICS")) }
@@ -142,7 +147,8 @@ class WsSession internal constructor(
         for (event in WsBatch.coalesce(wanted)) {
             val change = WsTopics.change(event, encoded) ?: continue
             val unchanged = if (omitUnchanged) Unchanged.fieldsOf(event) else emptyList()
-            socket.send(Frame.Text(true, change.eventBytes(sequence++, withPrevious, unchanged)))
+            val shortened = if (shortenedLists) Unchanged.shortenedOf(event) else emptyMap()
+            socket.send(Frame.Text(true, change.eventBytes(sequence++, withPrevious, unchanged, shortened)))
         }
         flush()
     }

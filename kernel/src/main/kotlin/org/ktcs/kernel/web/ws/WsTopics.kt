@@ -121,26 +121,42 @@ internal class Change(
      * The [WsEvent] message numbered [seq] as UTF-8 JSON, put together from the states' bytes, which sessions share:
      * copying them is all a session does per event, however many sessions follow it. Without [withPrevious], `previous`
      * is `null` unless the object was removed. The fields named in [unchanged] are left out of `current` (a cut of its
-     * bytes, made by each session that asks for it) and listed in `unchanged`.
+     * bytes, made by each session that asks for it) and listed in `unchanged`; the lists in [shortened] are left out
+     * and listed in `shortened` with how many entries they lost from their front.
      */
-    fun eventBytes(seq: Long, withPrevious: Boolean = true, unchanged: List<String> = emptyList()): ByteArray {
+    fun eventBytes(
+        seq: Long,
+        withPrevious: Boolean = true,
+        unchanged: List<String> = emptyList(),
+        shortened: Map<String, Int> = emptyMap(),
+    ): ByteArray {
         val head = utf8("""{"type":"event","topic":"${topic.wireName}","seq":$seq,"previous":""")
         // A client that asked for no previous states still needs a removed object's, to know which one went.
         val previous = if (withPrevious || removed) previous ?: NULL else NULL
         val left = if (removed) emptyList() else unchanged
+        val cut = if (removed) emptyMap() else shortened
         val current = when {
             removed -> NULL
-            left.isEmpty() -> current!!
-            else -> currentWithout?.invoke(left) ?: withoutFields(current!!, left)
+            left.isEmpty() && cut.isEmpty() -> current!!
+            else -> (left + cut.keys).let { currentWithout?.invoke(it) ?: withoutFields(current!!, it) }
         }
-        val listed = if (left.isEmpty()) EMPTY else utf8(left.joinToString(",", ",\"unchanged\":[", "]") { "\"$it\"" })
-        val out = ByteArray(head.size + previous.size + CURRENT.size + current.size + listed.size + TAIL.size)
+        val parts = arrayOf(head, previous, CURRENT, current, unchangedField(left), shortenedField(cut), TAIL)
+        val out = ByteArray(parts.sumOf { it.size })
         var at = 0
-        for (part in arrayOf(head, previous, CURRENT, current, listed, TAIL)) {
+        for (part in parts) {
             part.copyInto(out, at)
             at += part.size
         }
         return out
+    }
+
+    private fun unchangedField(fields: List<String>): ByteArray =
+        if (fields.isEmpty()) EMPTY else utf8(fields.joinToString(",", ",\"unchanged\":[", "]") { "\"$it\"" })
+
+    private fun shortenedField(lists: Map<String, Int>): ByteArray = if (lists.isEmpty()) {
+        EMPTY
+    } else {
+        utf8(lists.entries.joinToString(",", ",\"shortened\":{", "}") { (name, dropped) -> "\"$name\":$dropped" })
     }
 
     companion object {

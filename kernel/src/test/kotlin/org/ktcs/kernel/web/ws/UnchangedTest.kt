@@ -1,6 +1,7 @@
 package org.ktcs.kernel.web.ws
 
 import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldNotContain
 import io.kotest.matchers.shouldBe
 import kotlinx.serialization.json.Json
 import kotlinx.serialization.json.JsonObject
@@ -56,7 +57,15 @@ class UnchangedTest : FunSpec({
         val message = parse(change.eventBytes(5, withPrevious = false, Unchanged.fieldsOf(event)))
 
         val unchanged = message["unchanged"]!!.jsonArray.map { it.jsonPrimitive.content }
-        unchanged shouldBe listOf("driveOrders", "properties", "history", "dependencies")
+        unchanged shouldBe listOf(
+            "driveOrders",
+            "properties",
+            "history",
+            "dependencies",
+            "creationTime",
+            "deadline",
+            "finishedTime",
+        )
         val current = message["current"]!!.jsonObject
         current.keys.intersect(unchanged.toSet()) shouldBe emptySet()
         current["currentRouteStepIndex"]!!.jsonPrimitive.content shouldBe "3"
@@ -68,10 +77,50 @@ class UnchangedTest : FunSpec({
         val parked = Vehicle("Vehicle-01", currentPosition = "A", allocatedResources = listOf(setOf("A")))
         val moving = parked.copy(allocatedResources = listOf(setOf("A"), setOf("A-B", "B")))
 
-        Unchanged.fieldsOf(VehicleEvent(parked, moving)) shouldBe
-            listOf("claimedResources", "properties", "acceptableOrderTypes")
+        val stable = listOf(
+            "properties",
+            "acceptableOrderTypes",
+            "boundingBox",
+            "energyLevelThresholdSet",
+            "loadHandlingDevices",
+            "state",
+            "procState",
+            "layout",
+        )
+        Unchanged.fieldsOf(VehicleEvent(parked, moving)) shouldBe listOf("claimedResources") + stable
         Unchanged.fieldsOf(VehicleEvent(null, parked)) shouldBe emptyList()
+        // A state is its value and its timestamp: the same state entered again is a change.
+        val again = moving.copy(stateTimestamp = Instant.ofEpochSecond(5))
+        Unchanged.fieldsOf(VehicleEvent(moving, again)) shouldBe
+            listOf("claimedResources", "allocatedResources") + (stable - "state")
         val removed = WsTopics.change(VehicleEvent(parked, null))!!
         parse(removed.eventBytes(1, unchanged = listOf("properties")))["unchanged"] shouldBe null
+    }
+
+    test("a resource list that lost its first steps is named with how many; any other change is not") {
+        val steps = listOf(setOf("A-B", "B"), setOf("B-C", "C"), setOf("C-D", "D"))
+        val driving = Vehicle("Vehicle-01", currentPosition = "A", claimedResources = steps)
+        val granted = driving.copy(claimedResources = steps.drop(1), allocatedResources = listOf(setOf("A-B", "B")))
+        val rerouted = driving.copy(claimedResources = listOf(setOf("A-E", "E")) + steps.drop(1))
+
+        Unchanged.shortenedOf(VehicleEvent(driving, granted)) shouldBe mapOf("claimedResources" to 1)
+        Unchanged.shortenedOf(VehicleEvent(driving, driving.copy(claimedResources = emptyList()))) shouldBe
+            mapOf("claimedResources" to 3)
+        Unchanged.shortenedOf(VehicleEvent(driving, rerouted)) shouldBe emptyMap()
+        Unchanged.shortenedOf(VehicleEvent(driving, driving)) shouldBe emptyMap()
+        Unchanged.shortenedOf(VehicleEvent(null, driving)) shouldBe emptyMap()
+
+        val message = parse(
+            WsTopics.change(VehicleEvent(driving, granted))!!.eventBytes(
+                2,
+                withPrevious = false,
+                Unchanged.fieldsOf(VehicleEvent(driving, granted)),
+                Unchanged.shortenedOf(VehicleEvent(driving, granted)),
+            ),
+        )
+        message["shortened"]!!.jsonObject["claimedResources"]!!.jsonPrimitive.content shouldBe "1"
+        val current = message["current"]!!.jsonObject
+        current.keys shouldNotContain "claimedResources"
+        current["allocatedResources"]!!.jsonArray.size shouldBe 1
     }
 })
