@@ -109,7 +109,7 @@ fun Vehicle.toSseDto(withResources: Boolean = true): SseVehicleDto = SseVehicleD
 )
 
 /** `#RRGGBB` as its components. */
-private fun parseColor(hex: String): SseColorDto {
+internal fun parseColor(hex: String): SseColorDto {
     val rgb = hex.removePrefix("#").toInt(HEX)
     return SseColorDto(rgb shr 16 and 0xFF, rgb shr 8 and 0xFF, rgb and 0xFF)
 }
