@@ -1,41 +1,29 @@
 package org.ktcs.kernel.web.ws
 
 import org.ktcs.api.model.Vehicle
-import org.ktcs.kernel.web.v1.V1Json
-import org.ktcs.kernel.web.v1.events.SseVehicleDto
-import org.ktcs.kernel.web.v1.events.toSseDto
+import org.ktcs.kernel.web.LastEncoded
 
 /**
- * Vehicles' event states as UTF-8 JSON, their resource lists spliced in as bytes. A driving vehicle changes many times
- * a second while the resources it claimed for its route (most of its JSON on a large plant) stay the same list, and a
- * client that keeps the latest state leaves them out when they did not change (`omitUnchanged`): the vehicle is encoded
- * with its lists empty, and each list ([EncodedResourceLists]), made only when a client takes it, is copied in.
+ * Vehicles' event states as UTF-8 JSON, written by [VehicleJsonWriter], their resource lists copied in as bytes. A
+ * driving vehicle changes many times a second while the resources it claimed for its route (most of its JSON on a
+ * large plant) stay the same list, and a client that keeps the latest state leaves them out when they did not change
+ * (`omitUnchanged`): each list ([EncodedResourceLists]) is made only when a client takes it. The values of the fields
+ * that seldom change ([SteadyVehicleFields]) are kept for the [capacity] most recently changed vehicles.
  */
 internal class EncodedVehicles(capacity: Int) {
     private val claimed = EncodedResourceLists(capacity)
     private val allocated = EncodedResourceLists(capacity)
+    private val steady = LastEncoded<Vehicle, SteadyVehicleFields>(capacity, ::steadyFieldsOf)
 
-    fun marked(vehicle: Vehicle): MarkedJson {
-        val text = utf8(V1Json.json.encodeToString(SseVehicleDto.serializer(), vehicle.toSseDto(withResources = false)))
-        return Marked(
-            text,
-            lazy { claimed.of(vehicle.name, vehicle.claimedResources) },
-            lazy { allocated.of(vehicle.name, vehicle.allocatedResources) },
-        )
-    }
+    fun marked(vehicle: Vehicle): MarkedJson = VehicleJsonWriter(
+        vehicle,
+        steady.of(vehicle.name, vehicle),
+        lazy { claimed.of(vehicle.name, vehicle.claimedResources) },
+        lazy { allocated.of(vehicle.name, vehicle.allocatedResources) },
+    )
 
-    /** A vehicle's JSON with empty resource lists ([text]), and the lists' bytes, made when first needed. */
-    private class Marked(
-        private val text: ByteArray,
-        claimed: Lazy<ByteArray>,
-        allocated: Lazy<ByteArray>,
-    ) : MarkedJson {
-        private val lists = mapOf("claimedResources" to claimed::value, "allocatedResources" to allocated::value)
-
-        override val full: ByteArray by lazy { rewriteFields(text, emptyList(), lists) }
-
-        override fun without(fields: List<String>): ByteArray = rewriteFields(text, fields, lists)
-    }
+    private fun steadyFieldsOf(vehicle: Vehicle): SteadyVehicleFields =
+        SteadyVehicleFields.of(vehicle, steady.lastOf(vehicle.name))
 }
 
 /** An object's state as UTF-8 JSON, whole or without some of its top-level fields. */

@@ -76,10 +76,11 @@ data class SseVehicleLayoutDto(val routeColor: SseColorDto)
 data class SseColorDto(val red: Int, val green: Int, val blue: Int)
 
 /**
- * kTCS keeps no history for vehicles, so it is always empty. Without [withResources], the claimed and allocated
- * resources are empty lists, for an encoder that adds them itself.
+ * kTCS keeps no history for vehicles, so it is always empty. The WebSocket stream writes the same JSON without this
+ * DTO (`ws/VehicleJsonWriter.kt`); its test compares the two byte for byte, so a field added here fails it until the
+ * writer writes it too.
  */
-fun Vehicle.toSseDto(withResources: Boolean = true): SseVehicleDto = SseVehicleDto(
+fun Vehicle.toSseDto(): SseVehicleDto = SseVehicleDto(
     name = name,
     properties = properties,
     history = emptyList<HistoryEntry>().toDto(),
@@ -99,8 +100,8 @@ fun Vehicle.toSseDto(withResources: Boolean = true): SseVehicleDto = SseVehicleD
     transportOrder = transportOrder,
     orderSequence = orderSequence,
     acceptableOrderTypes = acceptableOrderTypes.map { it.toDto() },
-    claimedResources = if (withResources) claimedResources.map { it.toList() } else emptyList(),
-    allocatedResources = if (withResources) allocatedResources.map { it.toList() } else emptyList(),
+    claimedResources = claimedResources.map { it.toList() },
+    allocatedResources = allocatedResources.map { it.toList() },
     currentPosition = currentPosition,
     pose = SsePoseDto(precisePosition?.toDto(), orientationAngle),
     envelopeKey = envelopeKey,
@@ -109,7 +110,7 @@ fun Vehicle.toSseDto(withResources: Boolean = true): SseVehicleDto = SseVehicleD
 )
 
 /** `#RRGGBB` as its components. */
-private fun parseColor(hex: String): SseColorDto {
+internal fun parseColor(hex: String): SseColorDto {
     val rgb = hex.removePrefix("#").toInt(HEX)
     return SseColorDto(rgb shr 16 and 0xFF, rgb shr 8 and 0xFF, rgb and 0xFF)
 }
