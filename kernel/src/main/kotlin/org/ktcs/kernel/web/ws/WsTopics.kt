@@ -22,6 +22,7 @@ import org.ktcs.kernel.web.v1.drivers.toDto
 import org.ktcs.kernel.web.v1.events.toSseDto
 import org.ktcs.kernel.web.v1.plantmodel.toDto
 import org.ktcs.kernel.web.v1.toWire
+import java.util.concurrent.ConcurrentHashMap
 
 /** How each topic's objects and changes look on the wire (the SSE shapes of web API v1, plus paths/locations). */
 internal object WsTopics {
@@ -150,8 +151,15 @@ internal class Change(
         return out
     }
 
-    private fun unchangedField(fields: List<String>): ByteArray =
-        if (fields.isEmpty()) EMPTY else utf8(fields.joinToString(",", ",\"unchanged\":[", "]") { "\"$it\"" })
+    // The same few lists of unchanged fields come with most events: each list's bytes are made once. Only the
+    // objects' own field names are listed, in their fixed order, so there are at most a few hundred such lists.
+    private fun unchangedField(fields: List<String>): ByteArray = if (fields.isEmpty()) {
+        EMPTY
+    } else {
+        UNCHANGED_LISTS.computeIfAbsent(fields) {
+            utf8(it.joinToString(",", ",\"unchanged\":[", "]") { name -> "\"$name\"" })
+        }
+    }
 
     private fun shortenedField(lists: Map<String, Int>): ByteArray = if (lists.isEmpty()) {
         EMPTY
@@ -162,6 +170,7 @@ internal class Change(
     companion object {
         private val NULL = utf8("null")
         private val EMPTY = ByteArray(0)
+        private val UNCHANGED_LISTS = ConcurrentHashMap<List<String>, ByteArray>()
         private val CURRENT = utf8(""","current":""")
         private val TAIL = utf8(""","v":$WS_PROTOCOL_VERSION}""")
 
