@@ -64,19 +64,12 @@ internal class SteadyVehicleFields private constructor(
 /** [bytes], the JSON of [source]. */
 internal class Encoded<T : Any>(val source: T, val bytes: ByteArray)
 
-private fun <T : Any> Encoded<T>?.reusedFor(source: T, encode: (T) -> ByteArray): Encoded<T> =
+/** This if it is [source]'s JSON (the same object), else [source] encoded by [encode]. */
+internal fun <T : Any> Encoded<T>?.reusedFor(source: T, encode: (T) -> ByteArray): Encoded<T> =
     if (this != null && this.source === source) this else Encoded(source, encode(source))
 
-private fun properties(properties: Map<String, String>) = json {
-    byte('{'.code.toByte())
-    for ((index, entry) in properties.entries.withIndex()) {
-        if (index > 0) byte(','.code.toByte())
-        string(entry.key)
-        byte(':'.code.toByte())
-        string(entry.value)
-    }
-    byte('}'.code.toByte())
-}
+/** [properties] as a JSON object. */
+internal fun properties(properties: Map<String, String>) = json { stringMap(properties) }
 
 private fun boundingBox(box: BoundingBox) = utf8(
     """{"length":${box.length},"width":${box.width},"height":${box.height},""" +
@@ -109,4 +102,5 @@ private fun layout(layout: VehicleLayout) = parseColor(layout.routeColor).let {
     utf8("""{"routeColor":{"red":${it.red},"green":${it.green},"blue":${it.blue}}}""")
 }
 
-private fun timestamp(instant: Instant) = jsonString(instant.toWire())
+/** [instant] as the JSON string v1 writes for it. */
+internal fun timestamp(instant: Instant) = jsonString(instant.toWire())

@@ -88,33 +88,17 @@ internal object Unchanged {
 internal fun withoutFields(json: ByteArray, names: Collection<String>): ByteArray =
     if (names.isEmpty()) json else rewriteFields(json, names)
 
-/**
- * [json] (as for [withoutFields]) without its top-level fields named in [omit], and with the values of those named in
- * [replace] replaced by what their functions give (asked only for fields that are there and not omitted): in one pass
- * over the bytes, so that an encoder can leave large values out of the object it encodes and put their own bytes in.
- */
-internal fun rewriteFields(
-    json: ByteArray,
-    omit: Collection<String>,
-    replace: Map<String, () -> ByteArray> = emptyMap(),
-): ByteArray {
+/** [json] (as for [withoutFields]) without its top-level fields named in [omit], in one pass over the bytes. */
+internal fun rewriteFields(json: ByteArray, omit: Collection<String>): ByteArray {
     val omitted = omit.map(::keyOf)
-    val replaced = replace.map { (name, value) -> keyOf(name) to value }
     val out = ByteArrayOutputStream(json.size)
     out.write(json[0].toInt())
     var at = 1
     while (at < json.size && json[at] != CLOSE_BRACE) {
-        val valueAt = endOfString(json, at) + 1
-        val end = endOfValue(json, valueAt)
+        val end = endOfValue(json, endOfString(json, at) + 1)
         if (omitted.none { startsWith(json, at, it) }) {
             if (out.size() > 1) out.write(COMMA.toInt())
-            val value = replaced.firstOrNull { startsWith(json, at, it.first) }?.second
-            if (value == null) {
-                out.write(json, at, end - at)
-            } else {
-                out.write(json, at, valueAt - at)
-                out.write(value())
-            }
+            out.write(json, at, end - at)
         }
         at = if (end < json.size && json[end] == COMMA) end + 1 else end
     }

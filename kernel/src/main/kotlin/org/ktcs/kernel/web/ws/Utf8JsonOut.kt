@@ -82,6 +82,18 @@ internal class Utf8JsonOut(capacity: Int) {
         byte(CLOSE_BRACKET)
     }
 
+    /** [map] as a JSON object whose values are strings, in the map's order. */
+    fun stringMap(map: Map<String, String>) {
+        byte(OPEN_BRACE)
+        for ((index, entry) in map.entries.withIndex()) {
+            if (index > 0) byte(COMMA)
+            string(entry.key)
+            byte(COLON)
+            string(entry.value)
+        }
+        byte(CLOSE_BRACE)
+    }
+
     /** What was written, in an array of its size. */
     fun toByteArray(): ByteArray = if (size == bytes.size) bytes else bytes.copyOf(size)
 
@@ -167,6 +179,9 @@ internal class Utf8JsonOut(capacity: Int) {
 
         private const val QUOTE = '"'.code.toByte()
         private const val COMMA = ','.code.toByte()
+        private const val COLON = ':'.code.toByte()
+        private const val OPEN_BRACE = '{'.code.toByte()
+        private const val CLOSE_BRACE = '}'.code.toByte()
         private const val OPEN_BRACKET = '['.code.toByte()
         private const val CLOSE_BRACKET = ']'.code.toByte()
         private const val MINUS = '-'.code.toByte()

@@ -29,21 +29,6 @@ class UnchangedTest : FunSpec({
         withoutFields(utf8(json), emptyList()).decodeToString() shouldBe json
     }
 
-    test("values are replaced at the top level only, and asked for only where the field is there and kept") {
-        val json = """{"a":[],"b":{"a":[]},"c":"\"a\":[]","d":[]}"""
-        val asked = mutableListOf<String>()
-        fun value(name: String, bytes: String): () -> ByteArray = {
-            asked += name
-            utf8(bytes)
-        }
-        val replace = mapOf("a" to value("a", "[[\"x\"]]"), "d" to value("d", "[1]"), "z" to value("z", "[2]"))
-
-        val rewritten = rewriteFields(utf8(json), listOf("d"), replace)
-
-        parse(rewritten) shouldBe Json.parseToJsonElement("""{"a":[["x"]],"b":{"a":[]},"c":"\"a\":[]"}""")
-        asked shouldBe listOf("a")
-    }
-
     test("an order advancing a step leaves out its drive orders; the client puts back the same object") {
         val order = TransportOrder(
             "T1",

@@ -4,7 +4,6 @@ import io.kotest.assertions.throwables.shouldThrow
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.shouldBe
 import io.kotest.property.Arb
-import io.kotest.property.RandomSource
 import io.kotest.property.arbitrary.arbitrary
 import io.kotest.property.arbitrary.boolean
 import io.kotest.property.arbitrary.choice
@@ -19,7 +18,6 @@ import io.kotest.property.arbitrary.orNull
 import io.kotest.property.arbitrary.set
 import io.kotest.property.arbitrary.shuffle
 import io.kotest.property.arbitrary.subsequence
-import io.kotest.property.arbitrary.take
 import io.kotest.property.checkAll
 import kotlinx.serialization.SerializationException
 import kotlinx.serialization.descriptors.elementNames
@@ -37,7 +35,7 @@ import org.ktcs.api.model.VehicleState
 import org.ktcs.kernel.web.v1.V1Json
 import org.ktcs.kernel.web.v1.events.SseVehicleDto
 import org.ktcs.kernel.web.v1.events.toSseDto
-import java.time.Instant
+import org.ktcs.kernel.web.ws.JsonArbs.shared
 
 /**
  * The vehicle writer against the encoding it replaces: kotlinx's of the DTO, and fields cut from that by
@@ -94,24 +92,8 @@ class VehicleJsonWriterTest : FunSpec({
 
 /** Vehicles with anything their JSON can hold, their seldom changing objects often shared as copies share them. */
 private object VehicleArbs {
-    private val pieces = listOf(
-        "a", "Z", "0", " ", "-", "\"", "\\", "/", "\u0000", "\u0001", "\b", "\t", "\n", "\u000B", "\u000C", "\r",
-        "\u001F", "\u007F", "\u0080", "é", "Ä", "ߐ", "→", "€", "\u2028", "\uFFFF", "😀", "\uD83D", "\uDE00",
-        "\"claimedResources\":[]", "null", "NaN", ",", "}", "]",
-    )
-
-    // Any UTF-16 units, lone surrogates among them.
-    private val anyChars = Arb.list(Arb.int(0..0xFFFF), 0..8).map { codes ->
-        codes.map { it.toChar() }.joinToString("")
-    }
-    val text = Arb.choice(Arb.list(Arb.element(pieces), 0..6).map { it.joinToString("") }, anyChars)
-
-    private val instant = Arb.choice(
-        Arb.element(Instant.EPOCH, Instant.MIN, Instant.MAX, Instant.parse("2024-02-29T23:59:59.123Z")),
-        arbitrary {
-            Instant.ofEpochSecond(Arb.long(-MAX_SECONDS..MAX_SECONDS).bind(), Arb.long(0L..MAX_NANOS).bind())
-        },
-    )
+    val text = JsonArbs.text
+    private val instant = JsonArbs.instant
 
     // What kotlinx writes: NaN (as a string, see NanAsStringSerializer) and finite numbers.
     private val angle = Arb.choice(
@@ -173,13 +155,7 @@ private object VehicleArbs {
     val vehicle = vehicle(anyAngle)
     val writableVehicle = vehicle(angle)
 
-    /** [arb]'s values, half of them from a few made once: objects that several vehicles share, as copies do. */
-    private fun <T> shared(arb: Arb<T>, poolSize: Int = 3): Arb<T> =
-        Arb.choice(Arb.element(arb.take(poolSize, RandomSource.seeded(poolSize.toLong())).toList()), arb)
-
     private const val NULLS = 0.3
-    private const val MAX_SECONDS = 100_000_000_000L
-    private const val MAX_NANOS = 999_999_999L
     private const val HEX = 16
     private const val COLOR_DIGITS = 6
 }

@@ -52,11 +52,14 @@ data class SseDriveOrderDto(
 @Serializable
 data class SseDestinationDto(val destination: String, val operation: String, val properties: Map<String, String>)
 
-/** Without [withHistory], the history has no entries, for an encoder that adds them itself. */
-fun TransportOrder.toSseDto(withHistory: Boolean = true): SseTransportOrderDto = SseTransportOrderDto(
+/**
+ * The WebSocket stream writes the same JSON without this DTO (`ws/OrderJsonWriter.kt`); its test compares the two
+ * byte for byte, so a field added here fails it until the writer writes it too.
+ */
+fun TransportOrder.toSseDto(): SseTransportOrderDto = SseTransportOrderDto(
     name = name,
     properties = properties,
-    history = if (withHistory) history.toDto() else NO_HISTORY,
+    history = history.toDto(),
     type = type,
     dependencies = dependencies.toList(),
     driveOrders = driveOrders.map { it.toSseDto(name) },
@@ -81,5 +84,3 @@ private fun DriveOrder.toSseDto(order: String) = SseDriveOrderDto(
     route = EncodedRoutes.of("$order/$name", route),
     state = state.name,
 )
-
-private val NO_HISTORY = ObjectHistoryDto(emptyList())
