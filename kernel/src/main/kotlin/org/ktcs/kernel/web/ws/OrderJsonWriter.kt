@@ -35,54 +35,22 @@ internal class OrderJsonWriter(
     private val order: TransportOrder,
     private val steady: SteadyOrderFields,
     private val history: Lazy<ByteArray>,
-) : MarkedJson {
+) : FieldByFieldJson<OrderField>(OrderField.FIELDS) {
     private val waitingReason = order.waitingReason()
 
     // Each drive order's route: looked up once, when the drive orders are first written (measured, then copied).
     private val routes: Array<ByteArray> by lazy { steady.driveOrders.parts.map { it.routeJson() }.toTypedArray() }
 
-    override val full: ByteArray by lazy { write(omitted = 0) }
+    override fun isPresent(field: OrderField) = field != WAITING_REASON || waitingReason != null
 
-    override fun without(fields: List<String>): ByteArray = write(OrderField.bitsOf(fields))
-
-    /** The order without the fields whose [OrderField.bit]s are set in [omitted]. */
-    private fun write(omitted: Int): ByteArray {
-        val out = Utf8JsonOut(size(omitted))
-        out.byte(OPEN_BRACE)
-        var written = 0
-        for (field in OrderField.ALL) {
-            if (!isWritten(field, omitted)) continue
-            if (written++ > 0) out.byte(COMMA)
-            out.raw(field.prefix)
-            writeValue(field, out)
-        }
-        out.byte(CLOSE_BRACE)
-        return out.toByteArray()
-    }
-
-    private fun size(omitted: Int): Int {
-        var size = 2
-        var written = 0
-        for (field in OrderField.ALL) {
-            if (!isWritten(field, omitted)) continue
-            if (written++ > 0) size++
-            size += field.prefix.size + sizeOfValue(field)
-        }
-        return size
-    }
-
-    // kotlinx leaves `waitingReason` out when it is `null` (`EncodeDefault.Mode.NEVER`).
-    private fun isWritten(field: OrderField, omitted: Int) =
-        omitted and field.bit == 0 && (field != WAITING_REASON || waitingReason != null)
-
-    private fun writeValue(field: OrderField, out: Utf8JsonOut) = when (field.kind) {
+    override fun writeValue(field: OrderField, out: Utf8JsonOut) = when (field.kind) {
         OrderFieldKind.BYTES -> out.raw(bytesOf(field))
         OrderFieldKind.TEXT -> out.stringOrNull(textOf(field))
         OrderFieldKind.NUMBER -> out.int(numberOf(field))
         OrderFieldKind.DRIVE_ORDERS -> out.driveOrders(steady.driveOrders.parts, routes)
     }
 
-    private fun sizeOfValue(field: OrderField): Int = when (field.kind) {
+    override fun sizeOfValue(field: OrderField): Int = when (field.kind) {
         OrderFieldKind.BYTES -> bytesOf(field).size
         OrderFieldKind.TEXT -> textOf(field)?.let { Utf8JsonOut.sizeOf(it) } ?: Utf8JsonOut.NULL.size
         OrderFieldKind.NUMBER -> Utf8JsonOut.sizeOf(numberOf(field).toLong())
@@ -120,10 +88,10 @@ internal class OrderJsonWriter(
 }
 
 /** How a field's value is made: kept as bytes, a string or `null`, an int, the drive orders with their routes. */
-private enum class OrderFieldKind { BYTES, TEXT, NUMBER, DRIVE_ORDERS }
+internal enum class OrderFieldKind { BYTES, TEXT, NUMBER, DRIVE_ORDERS }
 
 /** The top-level fields of [org.ktcs.kernel.web.v1.events.SseTransportOrderDto], in its order. */
-private enum class OrderField(val wireName: String, val kind: OrderFieldKind) {
+internal enum class OrderField(val wireName: String, val kind: OrderFieldKind) {
     NAME("name", OrderFieldKind.BYTES),
     PROPERTIES("properties", OrderFieldKind.BYTES),
     HISTORY("history", OrderFieldKind.BYTES),
@@ -144,26 +112,14 @@ private enum class OrderField(val wireName: String, val kind: OrderFieldKind) {
     WAITING_REASON("waitingReason", OrderFieldKind.TEXT),
     ;
 
-    /** `"name":`, what starts the field. */
-    val prefix = jsonString(wireName) + ':'.code.toByte()
-
-    val bit = 1 shl ordinal
-
     companion object {
-        val ALL = entries.toTypedArray()
-        private val byWireName = entries.associateBy { it.wireName }
-
-        /** The [bit]s of the fields named [wireNames]; names of no field are ignored. */
-        fun bitsOf(wireNames: List<String>): Int =
-            wireNames.fold(0) { bits, name -> bits or (byWireName[name]?.bit ?: 0) }
+        val FIELDS = JsonFields(entries.toTypedArray(), OrderField::wireName)
     }
 }
 
 private val ORDER_STATES = TransportOrderState.entries.map { jsonString(it.name) }
 private val TRUE = utf8("true")
 private val FALSE = utf8("false")
-private const val OPEN_BRACE = '{'.code.toByte()
-private const val CLOSE_BRACE = '}'.code.toByte()
 private const val OPEN_BRACKET = '['.code.toByte()
 private const val CLOSE_BRACKET = ']'.code.toByte()
 private const val COMMA = ','.code.toByte()

@@ -41,55 +41,23 @@ internal class VehicleJsonWriter(
     private val steady: SteadyVehicleFields,
     private val claimed: Lazy<ByteArray>,
     private val allocated: Lazy<ByteArray>,
-) : MarkedJson {
-    override val full: ByteArray by lazy { write(omitted = 0) }
+) : FieldByFieldJson<VehicleField>(VehicleField.FIELDS) {
+    override fun isPresent(field: VehicleField) = field != WAITING_REASON || vehicle.waitingReason != null
 
-    override fun without(fields: List<String>): ByteArray = write(VehicleField.bitsOf(fields))
-
-    /** The vehicle without the fields whose [VehicleField.bit]s are set in [omitted]. */
-    private fun write(omitted: Int): ByteArray {
-        val out = Utf8JsonOut(size(omitted))
-        out.byte(OPEN_BRACE)
-        var written = 0
-        for (field in VehicleField.ALL) {
-            if (!isWritten(field, omitted)) continue
-            if (written++ > 0) out.byte(COMMA)
-            out.raw(field.prefix)
-            writeValue(field, out)
-        }
-        out.byte(CLOSE_BRACE)
-        return out.toByteArray()
+    override fun writeValue(field: VehicleField, out: Utf8JsonOut) = when (field.kind) {
+        VehicleFieldKind.BYTES -> out.raw(bytesOf(field))
+        VehicleFieldKind.TEXT -> out.stringOrNull(textOf(field))
+        VehicleFieldKind.NUMBER -> out.int(numberOf(field))
+        VehicleFieldKind.STATE -> out.state(field, stateNameOf(field), sinceOf(field))
+        VehicleFieldKind.POSE -> out.pose(vehicle)
     }
 
-    private fun size(omitted: Int): Int {
-        var size = 2
-        var written = 0
-        for (field in VehicleField.ALL) {
-            if (!isWritten(field, omitted)) continue
-            if (written++ > 0) size++
-            size += field.prefix.size + sizeOfValue(field)
-        }
-        return size
-    }
-
-    // kotlinx leaves `waitingReason` out when it is `null` (`EncodeDefault.Mode.NEVER`).
-    private fun isWritten(field: VehicleField, omitted: Int) =
-        omitted and field.bit == 0 && (field != WAITING_REASON || vehicle.waitingReason != null)
-
-    private fun writeValue(field: VehicleField, out: Utf8JsonOut) = when (field.kind) {
-        Kind.BYTES -> out.raw(bytesOf(field))
-        Kind.TEXT -> out.stringOrNull(textOf(field))
-        Kind.NUMBER -> out.int(numberOf(field))
-        Kind.STATE -> out.state(field, stateNameOf(field), sinceOf(field))
-        Kind.POSE -> out.pose(vehicle)
-    }
-
-    private fun sizeOfValue(field: VehicleField): Int = when (field.kind) {
-        Kind.BYTES -> bytesOf(field).size
-        Kind.TEXT -> textOf(field)?.let { Utf8JsonOut.sizeOf(it) } ?: Utf8JsonOut.NULL.size
-        Kind.NUMBER -> Utf8JsonOut.sizeOf(numberOf(field).toLong())
-        Kind.STATE -> stateSize(field, stateNameOf(field), sinceOf(field))
-        Kind.POSE -> poseSize(vehicle)
+    override fun sizeOfValue(field: VehicleField): Int = when (field.kind) {
+        VehicleFieldKind.BYTES -> bytesOf(field).size
+        VehicleFieldKind.TEXT -> textOf(field)?.let { Utf8JsonOut.sizeOf(it) } ?: Utf8JsonOut.NULL.size
+        VehicleFieldKind.NUMBER -> Utf8JsonOut.sizeOf(numberOf(field).toLong())
+        VehicleFieldKind.STATE -> stateSize(field, stateNameOf(field), sinceOf(field))
+        VehicleFieldKind.POSE -> poseSize(vehicle)
     }
 
     private fun bytesOf(field: VehicleField): ByteArray = when (field) {
@@ -133,48 +101,38 @@ internal class VehicleJsonWriter(
 }
 
 /** How a field's value is made: kept as bytes, a string or `null`, an int, a state with its timestamp, the pose. */
-private enum class Kind { BYTES, TEXT, NUMBER, STATE, POSE }
+internal enum class VehicleFieldKind { BYTES, TEXT, NUMBER, STATE, POSE }
 
 /** The top-level fields of [org.ktcs.kernel.web.v1.events.SseVehicleDto], in its order. */
-private enum class VehicleField(val wireName: String, val kind: Kind) {
-    NAME("name", Kind.BYTES),
-    PROPERTIES("properties", Kind.BYTES),
-    HISTORY("history", Kind.BYTES),
-    BOUNDING_BOX("boundingBox", Kind.BYTES),
-    ENERGY_LEVEL_THRESHOLD_SET("energyLevelThresholdSet", Kind.BYTES),
-    ENERGY_LEVEL("energyLevel", Kind.NUMBER),
-    MAX_VELOCITY("maxVelocity", Kind.NUMBER),
-    MAX_REVERSE_VELOCITY("maxReverseVelocity", Kind.NUMBER),
-    RECHARGE_OPERATION("rechargeOperation", Kind.TEXT),
-    LOAD_HANDLING_DEVICES("loadHandlingDevices", Kind.BYTES),
-    STATE("state", Kind.STATE),
-    PROC_STATE("procState", Kind.STATE),
-    INTEGRATION_LEVEL("integrationLevel", Kind.BYTES),
-    PAUSED("paused", Kind.BYTES),
-    TRANSPORT_ORDER("transportOrder", Kind.TEXT),
-    ORDER_SEQUENCE("orderSequence", Kind.TEXT),
-    ACCEPTABLE_ORDER_TYPES("acceptableOrderTypes", Kind.BYTES),
-    CLAIMED_RESOURCES("claimedResources", Kind.BYTES),
-    ALLOCATED_RESOURCES("allocatedResources", Kind.BYTES),
-    CURRENT_POSITION("currentPosition", Kind.TEXT),
-    POSE("pose", Kind.POSE),
-    ENVELOPE_KEY("envelopeKey", Kind.TEXT),
-    LAYOUT("layout", Kind.BYTES),
-    WAITING_REASON("waitingReason", Kind.TEXT),
+internal enum class VehicleField(val wireName: String, val kind: VehicleFieldKind) {
+    NAME("name", VehicleFieldKind.BYTES),
+    PROPERTIES("properties", VehicleFieldKind.BYTES),
+    HISTORY("history", VehicleFieldKind.BYTES),
+    BOUNDING_BOX("boundingBox", VehicleFieldKind.BYTES),
+    ENERGY_LEVEL_THRESHOLD_SET("energyLevelThresholdSet", VehicleFieldKind.BYTES),
+    ENERGY_LEVEL("energyLevel", VehicleFieldKind.NUMBER),
+    MAX_VELOCITY("maxVelocity", VehicleFieldKind.NUMBER),
+    MAX_REVERSE_VELOCITY("maxReverseVelocity", VehicleFieldKind.NUMBER),
+    RECHARGE_OPERATION("rechargeOperation", VehicleFieldKind.TEXT),
+    LOAD_HANDLING_DEVICES("loadHandlingDevices", VehicleFieldKind.BYTES),
+    STATE("state", VehicleFieldKind.STATE),
+    PROC_STATE("procState", VehicleFieldKind.STATE),
+    INTEGRATION_LEVEL("integrationLevel", VehicleFieldKind.BYTES),
+    PAUSED("paused", VehicleFieldKind.BYTES),
+    TRANSPORT_ORDER("transportOrder", VehicleFieldKind.TEXT),
+    ORDER_SEQUENCE("orderSequence", VehicleFieldKind.TEXT),
+    ACCEPTABLE_ORDER_TYPES("acceptableOrderTypes", VehicleFieldKind.BYTES),
+    CLAIMED_RESOURCES("claimedResources", VehicleFieldKind.BYTES),
+    ALLOCATED_RESOURCES("allocatedResources", VehicleFieldKind.BYTES),
+    CURRENT_POSITION("currentPosition", VehicleFieldKind.TEXT),
+    POSE("pose", VehicleFieldKind.POSE),
+    ENVELOPE_KEY("envelopeKey", VehicleFieldKind.TEXT),
+    LAYOUT("layout", VehicleFieldKind.BYTES),
+    WAITING_REASON("waitingReason", VehicleFieldKind.TEXT),
     ;
 
-    /** `"name":`, what starts the field. */
-    val prefix = jsonString(wireName) + ':'.code.toByte()
-
-    val bit = 1 shl ordinal
-
     companion object {
-        val ALL = entries.toTypedArray()
-        private val byWireName = entries.associateBy { it.wireName }
-
-        /** The [bit]s of the fields named [wireNames]; names of no field are ignored. */
-        fun bitsOf(wireNames: List<String>): Int =
-            wireNames.fold(0) { bits, name -> bits or (byWireName[name]?.bit ?: 0) }
+        val FIELDS = JsonFields(entries.toTypedArray(), VehicleField::wireName)
     }
 }
 
@@ -196,15 +154,14 @@ private val ORIENTATION_ANGLE = utf8(""","orientationAngle":""")
 private val NAN = utf8("\"NaN\"")
 private const val OPEN_BRACE = '{'.code.toByte()
 private const val CLOSE_BRACE = '}'.code.toByte()
-private const val COMMA = ','.code.toByte()
 
 /**
  * `{"state":"IDLE","timestamp":…}` for [field] `state`, and the same with `procState`: its value's field is named as
- * the field itself ([VehicleField.prefix]).
+ * the field itself.
  */
 private fun Utf8JsonOut.state(field: VehicleField, name: ByteArray, since: ByteArray) {
     byte(OPEN_BRACE)
-    raw(field.prefix)
+    raw(VehicleField.FIELDS.keyOf(field))
     raw(name)
     raw(TIMESTAMP)
     raw(since)
@@ -212,7 +169,7 @@ private fun Utf8JsonOut.state(field: VehicleField, name: ByteArray, since: ByteA
 }
 
 private fun stateSize(field: VehicleField, name: ByteArray, since: ByteArray) =
-    1 + field.prefix.size + name.size + TIMESTAMP.size + since.size + 1
+    1 + VehicleField.FIELDS.keyOf(field).size + name.size + TIMESTAMP.size + since.size + 1
 
 /** The pose, its unknown orientation (`NaN`) as a string, as [org.ktcs.kernel.web.v1.NanAsStringSerializer] does. */
 private fun Utf8JsonOut.pose(vehicle: Vehicle) {
