@@ -1,9 +1,6 @@
 package org.ktcs.kernel.web.ws
 
-import kotlinx.serialization.builtins.SetSerializer
-import kotlinx.serialization.builtins.serializer
 import org.ktcs.kernel.web.LastEncoded
-import org.ktcs.kernel.web.v1.V1Json
 
 /**
  * Vehicles' resource lists (claimed or allocated, per movement step) as JSON, the last one of each of the [capacity]
@@ -42,21 +39,22 @@ internal class EncodedResourceLists(capacity: Int) {
         const val OPEN = '['.code.toByte()
         const val COMMA = ','.code.toByte()
         const val CLOSE = ']'.code.toByte()
-        val STEP = SetSerializer(String.serializer())
 
+        // Written as kotlinx writes a list of string sets (V1Json), measured first into an array of its size.
         fun encode(list: List<Set<String>>): Encoded {
-            val steps = list.map { utf8(V1Json.json.encodeToString(STEP, it)) }
-            val bytes = ByteArray(steps.sumOf { it.size } + steps.size + 1)
-            val starts = IntArray(steps.size)
-            var at = 0
-            steps.forEachIndexed { index, step ->
-                bytes[at++] = if (index == 0) OPEN else COMMA
-                starts[index] = at
-                step.copyInto(bytes, at)
-                at += step.size
+            val out = Utf8JsonOut(sizeOf(list))
+            val starts = IntArray(list.size)
+            list.forEachIndexed { index, step ->
+                out.byte(if (index == 0) OPEN else COMMA)
+                starts[index] = out.written
+                out.array(step) { string(it) }
             }
-            bytes[at] = CLOSE
-            return Encoded(list, bytes, starts)
+            out.byte(CLOSE)
+            return Encoded(list, out.toByteArray(), starts)
         }
+
+        // The outer brackets and commas (one byte per step and one more), each step's brackets, names and commas.
+        private fun sizeOf(list: List<Set<String>>): Int = list.size + 1 +
+            list.sumOf { step -> 2 + maxOf(step.size - 1, 0) + step.sumOf { Utf8JsonOut.sizeOf(it) } }
     }
 }

@@ -12,6 +12,9 @@ internal class Utf8JsonOut(capacity: Int) {
     private var bytes = ByteArray(capacity)
     private var size = 0
 
+    /** How many bytes were written so far. */
+    val written: Int get() = size
+
     fun byte(value: Byte) {
         ensure(1)
         bytes[size++] = value
