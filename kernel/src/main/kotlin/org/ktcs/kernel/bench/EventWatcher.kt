@@ -120,7 +120,7 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
         }
     }
 
-    /** A vehicle's change; [dropped] steps of its allocations were passed (the event says so instead of sending them). */
+    /** A vehicle's change; [dropped] steps of its allocations were passed (said instead of sending the rest). */
     private fun onVehicle(vehicle: Observed, dropped: Int?) {
         val name = vehicle.name ?: return
         // Left out as unchanged (the subscription asks for that), the resources are the ones the vehicle held before.
