@@ -67,7 +67,7 @@ internal class OrderJsonWriter(
         CREATION_TIME -> steady.creationTime.bytes
         DEADLINE -> steady.deadline.bytes
         FINISHED_TIME -> steady.finishedTime.bytes
-        DISPENSABLE -> if (order.dispensable) TRUE else FALSE
+        DISPENSABLE -> Utf8JsonOut.booleanOf(order.dispensable)
         else -> error("$field is no kept value")
     }
 
@@ -118,8 +118,6 @@ internal enum class OrderField(val wireName: String, val kind: OrderFieldKind) {
 }
 
 private val ORDER_STATES = TransportOrderState.entries.map { jsonString(it.name) }
-private val TRUE = utf8("true")
-private val FALSE = utf8("false")
 private const val OPEN_BRACKET = '['.code.toByte()
 private const val CLOSE_BRACKET = ']'.code.toByte()
 private const val COMMA = ','.code.toByte()

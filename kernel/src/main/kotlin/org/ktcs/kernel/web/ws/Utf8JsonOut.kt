@@ -144,6 +144,11 @@ internal class Utf8JsonOut(capacity: Int) {
 
     companion object {
         val NULL = utf8("null")
+        private val TRUE = utf8("true")
+        private val FALSE = utf8("false")
+
+        /** `true` or `false`, as bytes to copy. */
+        fun booleanOf(value: Boolean): ByteArray = if (value) TRUE else FALSE
 
         /** How many bytes [long] writes for [value]. */
         fun sizeOf(value: Long): Int = when {

@@ -68,7 +68,7 @@ internal class VehicleJsonWriter(
         ENERGY_LEVEL_THRESHOLD_SET -> steady.energyLevelThresholdSet.bytes
         LOAD_HANDLING_DEVICES -> steady.loadHandlingDevices.bytes
         INTEGRATION_LEVEL -> INTEGRATION_LEVELS[vehicle.integrationLevel.ordinal]
-        PAUSED -> if (vehicle.paused) TRUE else FALSE
+        PAUSED -> Utf8JsonOut.booleanOf(vehicle.paused)
         ACCEPTABLE_ORDER_TYPES -> steady.acceptableOrderTypes.bytes
         CLAIMED_RESOURCES -> claimed.value
         ALLOCATED_RESOURCES -> allocated.value
@@ -140,8 +140,6 @@ private val EMPTY_HISTORY = utf8("""{"entries":[]}""")
 private val VEHICLE_STATES = VehicleState.entries.map { jsonString(it.name) }
 private val PROC_STATES = ProcState.entries.map { jsonString(it.name) }
 private val INTEGRATION_LEVELS = IntegrationLevel.entries.map { jsonString(it.name) }
-private val TRUE = utf8("true")
-private val FALSE = utf8("false")
 private val TIMESTAMP = utf8(""","timestamp":""")
 private val POSITION_START = utf8("""{"position":""")
 private val X = utf8("""{"x":""")
