@@ -320,6 +320,9 @@ class WebApiTest : FunSpec({
             socket.send("""{"type":"subscribe","topics":["vehicles"],"shortenedLists":true}""")
             val refused = generateSequence { socket.next() }.first { it["type"]!!.jsonPrimitive.content == "error" }
             refused["message"]!!.jsonPrimitive.content shouldContain "shortenedLists needs omitUnchanged"
+            socket.send("""{"type":"subscribe","topics":["vehicles"],"omitUnchanged":true,"shortenedLists":1}""")
+            val wrongType = generateSequence { socket.next() }.first { it["type"]!!.jsonPrimitive.content == "error" }
+            wrongType["message"]!!.jsonPrimitive.content shouldContain "shortenedLists"
             socket.close()
         } finally {
             application.stop()
