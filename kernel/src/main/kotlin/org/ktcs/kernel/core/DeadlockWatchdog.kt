@@ -21,6 +21,7 @@ class DeadlockWatchdog(private val kernel: KernelCore, private val state: Kernel
     private val idleBlockers = IdleBlockers(kernel, state)
     private val retreating = Retreats(kernel)
     private val blockedClaims = BlockedClaims(kernel, state)
+    private val moving = MovingVehicles(state, MOVING_PATIENCE_MILLIS / checkPeriodMillis())
 
     override val detected: Int get() = stuck.detected
 
@@ -59,18 +60,22 @@ class DeadlockWatchdog(private val kernel: KernelCore, private val state: Kernel
         // found (a cycle it breaks is not counted; one it does not break is found at the next check).
         if (retreating.check()) return
         // Asks the scheduler's interface only, so a replaced scheduler keeps the watchdog working.
-        val graph = WaitForGraph(kernel.scheduler.waitsFor())
-        val deadlocks = DeadlockDetector.detect(graph)
+        val waits = kernel.scheduler.waitsFor()
+        val graph = WaitForGraph(waits)
+        // A vehicle carrying out a command does not wait: a cycle through it may end when it arrives.
+        moving.startCheck()
+        val stuckGraph = WaitForGraph(waits.filterKeys { !moving.isMoving(it) })
+        val deadlocks = DeadlockDetector.detect(stuckGraph)
         val allocations by lazy { kernel.scheduler.allocations() }
         val held = { vehicle: String -> allocations[vehicle].orEmpty() }
-        stuck.startCheck(held) { it in graph.edges }
+        stuck.startCheck(held) { it in stuckGraph.edges }
         // Each deadlock is reported once; breaking it is tried at once and then, for as long as nothing changes, at
         // growing intervals: a vehicle that could not be routed around it before may be now.
         deadlocks.forEach { deadlock ->
             val verdict = stuck.observe(deadlock.vehicles, held)
             if (verdict.isNew) report(deadlock)
             if (!verdict.resolveNow) return@forEach
-            if (breakDeadlock(deadlock, graph, again = !verdict.isNew)) {
+            if (breakDeadlock(deadlock, stuckGraph, again = !verdict.isNew)) {
                 stuck.rerouted(deadlock.vehicles)
                 log.info("deadlock: rerouted a vehicle to break it: vehicles={}", deadlock.vehicles)
             } else if (verdict.isNew) {
@@ -89,10 +94,18 @@ class DeadlockWatchdog(private val kernel: KernelCore, private val state: Kernel
             retreating.breakCycle(deadlock.vehicles)
     }
 
+    // A watchdog run by hand (period 0) counts its checks as if made at the default period.
+    private fun checkPeriodMillis(): Long = kernel.options.deadlockCheckIntervalMillis.takeIf { it > 0 } ?: 1_000L
+
     private fun report(deadlock: Deadlock) {
         val text = "deadlock: vehicles ${deadlock.vehicles.joinToString(
             " -> ",
         )} wait for each other; contested resources ${deadlock.resources.sorted().joinToString()}"
         state.notifications.publish("deadlock watchdog", NotificationLevel.IMPORTANT, text)
+    }
+
+    private companion object {
+        /** Vehicle time without a command reported done after which a vehicle with commands counts as stopped. */
+        const val MOVING_PATIENCE_MILLIS = 60_000L
     }
 }

@@ -59,6 +59,16 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
         this.driverName = driverName
     }
 
+    /**
+     * Whether the vehicle is carrying out a command it was sent (driving or operating) and not paused: it makes
+     * progress and will report, so a wait of its is no deadlock yet.
+     */
+    internal val isMoving: Boolean get() = sent.isNotEmpty() && !env.plant.vehicle(name).paused
+
+    /** How many commands the driver has reported carried out, ever: a count that moves while the vehicle does. */
+    internal var commandsDone = 0L
+        private set
+
     /** The commands of the current drive order: sent to the driver, waiting for resources, then the rest. */
     fun commandQueue(): List<QueuedCommand> =
         sent.map { QueuedCommand(it.command, CommandStage.SENT) } +
@@ -162,6 +172,7 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
             return
         }
         sent.removeFirst()
+        commandsDone++
         env.scheduler().free(
             this,
             held.passed(done.resources, command.step.destinationPoint, ::pathLength, lengthToCover()),
