@@ -21,6 +21,9 @@ import org.ktcs.kernel.simulation.SimulationKernel
 private class RetreatingScheduler(inner: Scheduler) : Scheduler by inner {
     var offered: List<Retreat> = emptyList()
     var asked = 0
+    var bay: String? = null
+
+    override fun retreatPoint(client: String): String? = bay
 
     override fun retreats(eligible: (String) -> Boolean): Sequence<Retreat> {
         asked++
@@ -77,6 +80,42 @@ class RetreatTest : FunSpec({
             order.state shouldBe TransportOrderState.FINISHED
             order.driveOrders.single().route!!.steps.map { it.path } shouldBe
                 listOf("A --- W", "W --- X", "X --- P", "P --- B", "B --- D")
+        }
+    }
+
+    test("a vehicle sent through a bay to break a deadlock is not sent through the same bay again at once") {
+        // V at A is bound for D past U, which stands on B; its only way aside is the park point P.
+        val blocked = PlantModel(
+            "bay",
+            points = listOf("A", "B", "D").map { Point(it) } + Point("P", type = PointType.PARK_POSITION),
+            paths = listOf(
+                Path("A --- B", "A", "B", 1_000),
+                Path("B --- D", "B", "D", 1_000),
+                Path("A --- P", "A", "P", 1_000),
+                Path("P --- B", "P", "B", 1_000),
+            ),
+            vehicles = listOf(
+                Vehicle("V", properties = mapOf("loopback:initialPosition" to "A")),
+                Vehicle("U", properties = mapOf("loopback:initialPosition" to "B")),
+            ),
+        )
+        val drivers = RecordingStepDrivers()
+        SimulationKernel(blocked, config, listOf(drivers.module, replacing)).use { kernel ->
+            (kernel.core.scheduler as RetreatingScheduler).bay = "P"
+            kernel.now {
+                createTransportOrder(
+                    TransportOrderCreation("T", listOf(Destination("D", "MOVE")), intendedVehicle = "V"),
+                )
+            }
+            var sent = emptyList<Boolean>()
+            kernel.now {
+                val retreats = Retreats(this)
+                sent = listOf(retreats.breakCycle(listOf("V")), retreats.breakCycle(listOf("V")))
+            }
+
+            sent shouldBe listOf(true, false)
+            kernel.core.orders.require("T").driveOrders.single().route!!.steps.map { it.destinationPoint } shouldBe
+                listOf("P", "B", "D")
         }
     }
 
