@@ -69,40 +69,30 @@ class MovingVehiclesTest : FunSpec({
     )
     val cycle = mapOf("A" to mapOf("B" to setOf("P3")), "B" to mapOf("A" to setOf("P1")))
 
-    fun kernelWithHeldDrivers(drivers: MutableMap<String, HeldDriver>) = SimulationKernel(
-        plant,
-        config,
-        listOf(
-            module {
-                single<Scheduler> { WaitsOfTheTest(DefaultScheduler(get(), get<KernelContext>())) }
-                single {
-                    object : VehicleDriverFactory {
-                        override val name = "held"
-                        override val description = "test vehicle that arrives when the test says so"
+    // A kernel whose vehicles arrive when the test says so, and whose scheduler reports the waits the test sets.
+    fun withHeldDrivers(test: (SimulationKernel, Map<String, HeldDriver>) -> Unit) {
+        val drivers = HashMap<String, HeldDriver>()
+        val held = driverModule("held", "test vehicle that arrives when the test says so") { vehicleName, context ->
+            HeldDriver(vehicleName, context).also { drivers[vehicleName] = it }
+        }
+        val waits = module { single<Scheduler> { WaitsOfTheTest(DefaultScheduler(get(), get<KernelContext>())) } }
+        SimulationKernel(plant, config, listOf(waits, held)).use { kernel -> test(kernel, drivers) }
+    }
 
-                        override fun create(vehicleName: String, context: DriverContext): VehicleDriver =
-                            HeldDriver(vehicleName, context).also { drivers[vehicleName] = it }
-                    }
-                } bind VehicleDriverFactory::class
-            },
-        ),
-    )
+    // As above, with A sent its step to P2 and not arrived, and the cycle A <-> B reported.
+    fun withAUnderWay(test: (SimulationKernel, Map<String, HeldDriver>) -> Unit) = withHeldDrivers { kernel, drivers ->
+        kernel.execute(settleMillis = 50) {
+            createTransportOrder(TransportOrderCreation("T", listOf(Destination("P2", "MOVE")), intendedVehicle = "A"))
+        }
+        kernel.core.plant.vehicle("A").allocatedResources.flatten().toSet() shouldBe setOf("P1", "P1 --- P2", "P2")
+        (kernel.core.scheduler as WaitsOfTheTest).waits = cycle
+        test(kernel, drivers)
+    }
 
     fun SimulationKernel.checks(times: Int) = repeat(times) { execute { checkForDeadlocks() } }
 
-    fun SimulationKernel.sendAUnderWay(drivers: Map<String, HeldDriver>) {
-        execute(settleMillis = 50) {
-            createTransportOrder(TransportOrderCreation("T", listOf(Destination("P2", "MOVE")), intendedVehicle = "A"))
-        }
-        // A has been sent its step to P2 and has not arrived.
-        core.plant.vehicle("A").allocatedResources.flatten().toSet() shouldBe setOf("P1", "P1 --- P2", "P2")
-        (core.scheduler as WaitsOfTheTest).waits = cycle
-    }
-
     test("a cycle through a vehicle under way is no deadlock; once it has arrived and still waits, it is") {
-        val drivers = HashMap<String, HeldDriver>()
-        kernelWithHeldDrivers(drivers).use { kernel ->
-            kernel.sendAUnderWay(drivers)
+        withAUnderWay { kernel, drivers ->
             kernel.checks(5)
             kernel.core.watchdog.detected shouldBe 0
 
@@ -114,9 +104,7 @@ class MovingVehiclesTest : FunSpec({
     }
 
     test("a vehicle whose driver reports nothing for a minute of vehicle time counts as stopped") {
-        val drivers = HashMap<String, HeldDriver>()
-        kernelWithHeldDrivers(drivers).use { kernel ->
-            kernel.sendAUnderWay(drivers)
+        withAUnderWay { kernel, _ ->
             kernel.checks(60)
             kernel.core.watchdog.detected shouldBe 0
             kernel.checks(1)
@@ -125,8 +113,7 @@ class MovingVehiclesTest : FunSpec({
     }
 
     test("a cycle of vehicles that stand is reported at the first check, as before") {
-        val drivers = HashMap<String, HeldDriver>()
-        kernelWithHeldDrivers(drivers).use { kernel ->
+        withHeldDrivers { kernel, _ ->
             (kernel.core.scheduler as WaitsOfTheTest).waits = cycle
             kernel.checks(1)
             kernel.core.watchdog.detected shouldBe 1

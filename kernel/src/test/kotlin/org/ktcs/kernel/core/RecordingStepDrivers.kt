@@ -11,15 +11,26 @@ import org.ktcs.api.driver.VehicleDriverFactory
 class RecordingStepDrivers {
     val contexts = mutableMapOf<String, DriverContext>()
 
-    val module: Module = module {
-        single {
-            object : VehicleDriverFactory {
-                override val name = "step"
-                override val description = "test vehicle that drives at 1 m/s"
-
-                override fun create(vehicleName: String, context: DriverContext): VehicleDriver =
-                    StepDriver(vehicleName, context).also { contexts[vehicleName] = context }
-            }
-        } bind VehicleDriverFactory::class
+    val module: Module = driverModule("step", "test vehicle that drives at 1 m/s") { vehicleName, context ->
+        StepDriver(vehicleName, context).also { contexts[vehicleName] = context }
     }
+}
+
+/** A Koin module with one test driver factory, [name], whose drivers [create] makes. */
+fun driverModule(
+    name: String,
+    description: String,
+    create: (vehicleName: String, context: DriverContext) -> VehicleDriver,
+): Module = module {
+    single {
+        object : VehicleDriverFactory {
+            override val name = name
+            override val description = description
+
+            override fun create(vehicleName: String, context: DriverContext): VehicleDriver = create(
+                vehicleName,
+                context,
+            )
+        }
+    } bind VehicleDriverFactory::class
 }
