@@ -2,13 +2,10 @@ package org.ktcs.kernel.core
 
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.shouldBe
-import org.koin.dsl.bind
 import org.koin.dsl.module
 import org.ktcs.api.driver.BasicVehicleDriver
 import org.ktcs.api.driver.DriverContext
 import org.ktcs.api.driver.MovementCommand
-import org.ktcs.api.driver.VehicleDriver
-import org.ktcs.api.driver.VehicleDriverFactory
 import org.ktcs.api.model.Path
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.Point
