@@ -162,7 +162,9 @@ internal fun VehicleController.rerouteLegs(order: TransportOrder, legs: List<Dri
  */
 internal fun VehicleController.retreatVia(park: String, occupied: Set<String>): Boolean {
     val order = currentOrder?.let(env.orders::require) ?: return false
-    if (withdrawing) return false
+    // Sent its last step, the vehicle is bound to arrive and operate: a detour after that step would be driven after
+    // the drive order ended, as steps of the next one.
+    if (withdrawing || sent.lastOrNull()?.command?.finalMovement == true) return false
     val driveOrder = order.driveOrders[order.currentDriveOrderIndex]
     val oldRoute = driveOrder.route ?: return false
     val vehicle = env.plant.vehicle(name)
@@ -174,9 +176,8 @@ internal fun VehicleController.retreatVia(park: String, occupied: Set<String>): 
     if (steps.isEmpty()) return false
     val rerouted = reroutedDriveOrder(order, driveOrder, oldRoute, Route(steps, away.costs + back.costs))
     val ahead = commandsAhead(order, rerouted)
-    // The step index the order records can lie beyond the route's steps (seen once, on the warehouse after a chain of
-    // side steps and reroutes; where it goes stale is not found yet): then nothing is ahead, and following the new
-    // route would leave the vehicle with nothing to ask for, standing where it is for good.
+    // Nothing ahead (a stale step index once made it so: a detour appended after a last step already sent, now
+    // refused above) would leave the vehicle with nothing to ask for, standing where it is for good.
     if (ahead.isEmpty() || closesCycle(order, ahead)) return false
     followNewRoute(order, rerouted)
     return true

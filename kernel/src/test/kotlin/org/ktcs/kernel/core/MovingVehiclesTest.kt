@@ -3,42 +3,16 @@ package org.ktcs.kernel.core
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.shouldBe
 import org.koin.dsl.module
-import org.ktcs.api.driver.BasicVehicleDriver
-import org.ktcs.api.driver.DriverContext
-import org.ktcs.api.driver.MovementCommand
 import org.ktcs.api.model.Path
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.Point
 import org.ktcs.api.model.Vehicle
-import org.ktcs.api.model.VehicleState
 import org.ktcs.api.order.Destination
 import org.ktcs.api.order.TransportOrderCreation
 import org.ktcs.api.scheduling.Scheduler
 import org.ktcs.kernel.context.KernelContext
 import org.ktcs.kernel.scheduling.DefaultScheduler
 import org.ktcs.kernel.simulation.SimulationKernel
-
-/** A vehicle that carries out a command only when the test says it has arrived. */
-private class HeldDriver(name: String, context: DriverContext) : BasicVehicleDriver(name, context) {
-    private val underWay = ArrayDeque<MovementCommand>()
-
-    override fun onEnabled() {
-        context.vehicle().properties["loopback:initialPosition"]?.let(context::reportPosition)
-        context.reportState(VehicleState.IDLE)
-    }
-
-    override fun sendCommand(command: MovementCommand) {
-        underWay += command
-        context.reportState(VehicleState.EXECUTING)
-    }
-
-    fun arrive() {
-        val command = underWay.removeFirst()
-        context.reportPosition(command.step.destinationPoint)
-        onCommandExecuted(command)
-        if (underWay.isEmpty()) context.reportState(VehicleState.IDLE)
-    }
-}
 
 /** A scheduler that grants as the default one does but reports the waits the test sets. */
 private class WaitsOfTheTest(inner: Scheduler) : Scheduler by inner {
@@ -69,9 +43,7 @@ class MovingVehiclesTest : FunSpec({
     // A kernel whose vehicles arrive when the test says so, and whose scheduler reports the waits the test sets.
     fun withHeldDrivers(test: (SimulationKernel, Map<String, HeldDriver>) -> Unit) {
         val drivers = HashMap<String, HeldDriver>()
-        val held = driverModule("held", "test vehicle that arrives when the test says so") { vehicleName, context ->
-            HeldDriver(vehicleName, context).also { drivers[vehicleName] = it }
-        }
+        val held = heldDrivers(drivers)
         val waits = module { single<Scheduler> { WaitsOfTheTest(DefaultScheduler(get(), get<KernelContext>())) } }
         SimulationKernel(plant, config, listOf(waits, held)).use { kernel -> test(kernel, drivers) }
     }

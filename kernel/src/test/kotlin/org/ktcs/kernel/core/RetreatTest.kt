@@ -119,6 +119,44 @@ class RetreatTest : FunSpec({
         }
     }
 
+    test("a vehicle sent the last step of its drive order is not sent through a bay: it arrives and goes on") {
+        // V at A goes to D, then back to A; the park point P lies beside B, on its way.
+        val bayOnTheWay = PlantModel(
+            "last step",
+            points = listOf("A", "B", "D").map { Point(it) } + Point("P", type = PointType.PARK_POSITION),
+            paths = listOf(
+                Path("A --- B", "A", "B", 1_000, maxReverseVelocity = 1_000),
+                Path("B --- D", "B", "D", 1_000, maxReverseVelocity = 1_000),
+                Path("B --- P", "B", "P", 1_000, maxReverseVelocity = 1_000),
+            ),
+            vehicles = listOf(Vehicle("V", properties = mapOf("loopback:initialPosition" to "A"))),
+        )
+        val drivers = HashMap<String, HeldDriver>()
+        SimulationKernel(bayOnTheWay, config, listOf(heldDrivers(drivers))).use { kernel ->
+            kernel.now {
+                createTransportOrder(
+                    TransportOrderCreation("T", listOf(Destination("D", "MOVE"), Destination("A", "MOVE"))),
+                )
+            }
+            val driver = drivers.getValue("V")
+            driver.sentCommands.map { it.step.destinationPoint } shouldBe listOf("B", "D")
+
+            var retreated = true
+            kernel.now { retreated = retreat("V", "P", emptySet()) }
+            retreated shouldBe false
+
+            // Once sent, a detour after the last step would be driven as steps of the next drive order.
+            while (!kernel.core.orders.require("T").state.isFinal) {
+                kernel.now { driver.arrive() }
+            }
+            val order = kernel.core.orders.require("T")
+            order.state shouldBe TransportOrderState.FINISHED
+            order.driveOrders.map { leg -> leg.route!!.steps.map { it.destinationPoint } } shouldBe
+                listOf(listOf("B", "D"), listOf("B", "A"))
+            kernel.core.plant.vehicle("V").currentPosition shouldBe "A"
+        }
+    }
+
     test("a vehicle without a transport order is not sent, and the watchdog goes on to look for deadlocks") {
         val drivers = RecordingStepDrivers()
         SimulationKernel(model, config, listOf(drivers.module, replacing)).use { kernel ->
