@@ -157,6 +157,44 @@ class RetreatTest : FunSpec({
         }
     }
 
+    test("a vehicle sent through a bay asks for the way back out only once in it, so the point it left is freed") {
+        // V at X and U at D are both bound for A, where W stands; the bay P beside X lets U pass V (B and E are other
+        // ways on, so that nobody waits for a vehicle standing at a dead end).
+        val lane = PlantModel(
+            "lane with a bay",
+            points = listOf("A", "B", "X", "D", "E").map { Point(it) } + Point("P", type = PointType.PARK_POSITION),
+            paths = listOf("B" to "A", "A" to "X", "X" to "D", "X" to "E", "X" to "P").map { (from, to) ->
+                Path("$from --- $to", from, to, 1_000, maxReverseVelocity = 1_000)
+            },
+            vehicles = listOf("V" to "X", "U" to "D", "W" to "A").map { (name, at) ->
+                Vehicle(name, properties = mapOf("loopback:initialPosition" to at))
+            },
+        )
+        val drivers = HashMap<String, HeldDriver>()
+        SimulationKernel(lane, config, listOf(heldDrivers(drivers))).use { kernel ->
+            kernel.now {
+                for (vehicle in listOf("V", "U")) {
+                    createTransportOrder(
+                        TransportOrderCreation(
+                            "$vehicle-A",
+                            listOf(Destination("A", "MOVE")),
+                            intendedVehicle = vehicle,
+                        ),
+                    )
+                }
+            }
+            var retreated = false
+            kernel.now { retreated = retreat("V", "P", emptySet()) }
+            retreated shouldBe true
+            drivers.getValue("V").sentCommands.map { it.step.destinationPoint } shouldBe listOf("P")
+
+            kernel.now { drivers.getValue("V").arrive() }
+            // Asked for at once, the way back would have kept X held all along, and U would still wait for it.
+            drivers.getValue("U").sentCommands.map { it.step.destinationPoint } shouldBe listOf("X")
+            drivers.getValue("V").sentCommands shouldBe emptyList()
+        }
+    }
+
     test("a vehicle without a transport order is not sent, and the watchdog goes on to look for deadlocks") {
         val drivers = RecordingStepDrivers()
         SimulationKernel(model, config, listOf(drivers.module, replacing)).use { kernel ->
