@@ -25,7 +25,7 @@ internal class RouteSafety(
     private val requesters: (key: String) -> Collection<Requester> = { emptyList() },
 ) {
     /** One claimed step; [stop] is the way out of where it ends if the vehicle stops there for an operation. */
-    private class Step(val keys: Set<String>, val twoWay: Boolean, val stop: Exit?) {
+    private class Step(val keys: Set<String>, val twoWay: Boolean, val stop: Exit?, val intoDeadEnd: Boolean) {
         /** The step's resources and blocks, without corridor need keys: what holding the step means. */
         val physical: Set<String> = physicalOf(keys)
     }
@@ -76,7 +76,7 @@ internal class RouteSafety(
     fun claim(client: String, route: List<Set<String>>, stops: List<String?>, end: String?) {
         changed(client)
         routes[client] = route.zip(stops).mapTo(ArrayDeque()) { (keys, stop) ->
-            Step(keys, keys.any(exits::isTwoWay), stop?.let(exits::from))
+            Step(keys, keys.any(exits::isTwoWay), stop?.let(exits::from), stop != null && exits.isDeadEnd(stop))
         }
         wayOut[client] = end?.let(exits::from) ?: Exit.NONE
     }
@@ -361,6 +361,7 @@ internal class RouteSafety(
     // [holding]; a grant into a dead-end bay it leaves over a two-way path (a station stub or park bay beside an aisle)
     // is judged by the way out of the bay, as any other stop: the way on after it is judged when it asks to come out,
     // once the vehicles it let pass have gone. Stops left over one-way lanes keep the way on (the grids' stations).
+    // A one-way step ends the look-ahead, unless the step after it goes into a dead-end stop: that one counts too.
     private fun lookAhead(client: String, skipping: Set<String>?, holding: Set<String>): LookAhead {
         val exit = wayOut[client] ?: Exit.NONE
         val route = routes[client] ?: return LookAhead(exit.required, exit.options)
@@ -380,7 +381,11 @@ internal class RouteSafety(
             val holdsAll = holding.containsAll(step.physical)
             // An operation where the client stands: what it waits for next is the step after it, not any way out.
             if (!holdsAll && step.physical.all { it in holding || exits.isLocation(it) }) continue
-            if (!step.twoWay && !holdsAll) return LookAhead(ahead, emptyList())
+            if (!step.twoWay && !holdsAll) {
+                // Waiting on a dead-end stub's mouth to come in, it would stand in the way out of whoever is inside.
+                route.getOrNull(i + 1)?.takeIf { it.intoDeadEnd }?.let { ahead += it.keys }
+                return LookAhead(ahead, emptyList())
+            }
             step.stop?.let { return LookAhead(ahead + it.required, it.options) }
         }
         ahead += exit.required

@@ -117,6 +117,26 @@ class DeadlockAvoidanceTest : FunSpec({
         v2.granted.shouldBeEmpty()
     }
 
+    test("a vehicle bound into a dead-end stub over a one-way lane counts the stub's occupant before the lane") {
+        // Z -> A -> M one-way, the station stub S at M (two-way), M -> N -> A and N -> X one-way. v2 stands in S and
+        // will leave over M and N, where v3 stands and waits for A; v1 at Z is bound for S. On A, v1 would ask for M
+        // and wait there for S: a cycle through v2 and v3 one step later, which the one-way step to M hid.
+        val model = plant("Z-A", "A-M", "M-S", "S-M", "M-N", "N-A", "N-X")
+            .let { it.copy(locations = listOf(Location("L", "station", links = listOf(Link("S"))))) }
+        val f = SchedulerFixture(model)
+        val (v1, _, v3) = listOf("v1" to "Z", "v2" to "S", "v3" to "N").map { (name, point) ->
+            f.client(name).also { f.scheduler.allocateNow(it, setOf(point)) }
+        }
+        f.scheduler.claim(v1, listOf(setOf("Z-A", "A"), setOf("A-M", "M"), setOf("M-S", "S", "L")))
+        f.scheduler.claim(v3, listOf(setOf("N-A", "A")))
+
+        f.allocate(v1, "Z-A", "A")
+
+        v1.granted.shouldBeEmpty()
+        f.allocate(v3, "N-A", "A")
+        v3.granted shouldContainExactly listOf(setOf("N-A", "A"))
+    }
+
     test("a grant held back while one way on is still free is no deadlock for the watchdog") {
         // The loop P -> Q -> R -> S -> P with station stubs T (at R) and U (at S) and a way on S -> X. v1 stands in T
         // and will leave over R; v2 may not take R (it would wait at R for T); v3 drives from S to P and waits for Q.
