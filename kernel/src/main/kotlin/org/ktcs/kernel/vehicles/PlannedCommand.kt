@@ -36,3 +36,9 @@ fun plannedCommands(
         PlannedCommand(command, setOfNotNull(step.path, step.destinationPoint, command.opLocation))
     }
 }
+
+/** Whether this command drives back over the path of [last] (into a dead-end bay and out again). */
+internal fun PlannedCommand.turnsBackFrom(last: PlannedCommand): Boolean {
+    val path = command.step.path ?: return false
+    return path == last.command.step.path
+}

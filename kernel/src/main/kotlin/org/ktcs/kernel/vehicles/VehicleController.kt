@@ -142,17 +142,12 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
         val driver = driver ?: return
         if (withdrawing || waiting != null || !driver.isEnabled) return
         if (sent.size >= driver.commandQueueCapacity) return
-        if (sent.isNotEmpty() && turnsBack(remaining.firstOrNull() ?: return)) return
+        // Asked for before the vehicle reached the end of the path, the way back would be granted while it still holds
+        // the point it left, and a retreat through a bay would free nothing.
+        if (sent.isNotEmpty() && (remaining.firstOrNull() ?: return).turnsBackFrom(sent.last())) return
         val next = remaining.removeFirstOrNull() ?: return
         waiting = next
         env.scheduler().allocate(this, next.resources)
-    }
-
-    // Asked for before the vehicle reached the end of the path, the way back would be granted while it still holds the
-    // point it left, and a retreat through a bay would free nothing.
-    private fun turnsBack(next: PlannedCommand): Boolean {
-        val path = next.command.step.path ?: return false
-        return path == sent.last().command.step.path
     }
 
     override fun onAllocationGranted(resources: Set<String>): Boolean {
