@@ -44,10 +44,7 @@ internal class RouteSafety(
     private val routes = HashMap<String, ArrayDeque<Step>>()
     private val wayOut = HashMap<String, Exit>()
 
-    // A grant looked at as if made ([leavesDeadHole]): its client holds [Assumed.held].
-    private class Assumed(val client: String, val held: Set<String>)
-
-    private var assumed: Assumed? = null
+    private val assumed = AssumedGrants(holdings, holders)
 
     private val versions = ClientVersions()
 
@@ -172,6 +169,8 @@ internal class RouteSafety(
      * stretch the look-ahead covers the whole stretch already. The check follows at most [MAX_AHEAD] vehicles ahead.
      * Only the vehicles that have asked count: two grants may then hold each other back, each for a hole the other
      * could take, until one of them is retried after a release or its patience ends (developer's guide, section 12).
+     * A hole counts as taken only by a step that does not free, where the vehicle stood, a point every other vehicle
+     * asking for it could then not take ([vacatesDeadHole]): the knot two moves on.
      */
     fun leavesDeadHole(client: String, keys: Set<String>, behind: Set<String>): Boolean {
         if (keys.any(exits::isTwoWay)) return false
@@ -189,7 +188,11 @@ internal class RouteSafety(
             val asking = if (next != null && hole in next.keys) others + next else others
             others.none { it.keys.any(exits::isTwoWay) } &&
                 others.any { safeBefore.getOrPut(it.client) { isSafeFor(it, pinned = client) } } &&
-                asking.none { safeAfter.getOrPut(it.client) { assume(client, held, granted) { isSafeFor(it) } } }
+                asking.none { requester ->
+                    safeAfter.getOrPut(requester.client) {
+                        assume(client, held, granted) { isSafeFor(requester) && !vacatesDeadHole(requester) }
+                    }
+                }
         }
         if (dead) deadHolesHeldBack++
         return dead
@@ -197,6 +200,22 @@ internal class RouteSafety(
 
     private fun isSafeFor(requester: Requester, pinned: String? = null): Boolean =
         isSafe(requester.client, requester.keys, requester.behind, pinned)
+
+    // Whether [requester]'s step would leave the point it stands on free for good (every other vehicle asking for it
+    // would then wait, through a chain of waits, for itself): a hole only such a step fills is dead too (guide, 12).
+    private fun vacatesDeadHole(requester: Requester): Boolean {
+        val after = keysHeldAfter(requester.keys, requester.behind)
+        val vacated = assumed.holdingsOf(requester.client).filter { it !in after && exits.isPoint(it) }
+        if (vacated.isEmpty()) return false
+        val physical = physicalOf(requester.keys)
+        val index = routes[requester.client]?.indexOfFirst { it.physical == physical } ?: -1
+        return assume(requester.client, after, index) {
+            vacated.any { point ->
+                val takers = requesters(point).filter { it.client != requester.client }
+                takers.isNotEmpty() && takers.none { isSafeFor(it) }
+            }
+        }
+    }
 
     // The free keys that [client] or a vehicle in its way, through the holders of what each needs, needs next. What
     // the grantee leaves behind is none: nobody could take it before the grant.
@@ -206,7 +225,7 @@ internal class RouteSafety(
         val queue = ArrayDeque(listOf(client))
         while (queue.isNotEmpty() && seen.size <= MAX_AHEAD) {
             lookAhead(queue.removeFirst()).forEachKey { key ->
-                val keyHolders = holdersOf(key)
+                val keyHolders = assumed.holdersOf(key)
                 if (keyHolders.isEmpty() && holders(key).isEmpty()) holes += key
                 for (holder in keyHolders) if (seen.add(holder)) queue += holder
             }
@@ -215,29 +234,13 @@ internal class RouteSafety(
     }
 
     // Runs [body] as if [client] held [held] and its claimed step at index [granted] (if any) were granted.
-    private inline fun <T> assume(client: String, held: Set<String>, granted: Int, body: () -> T): T {
+    private fun <T> assume(client: String, held: Set<String>, granted: Int, body: () -> T): T {
         val route = routes[client]
         val step = if (granted >= 0) route?.removeAt(granted) else null
-        assumed = Assumed(client, held)
         try {
-            return body()
+            return assumed.assuming(client, held, body)
         } finally {
-            assumed = null
             if (step != null) route?.add(granted, step)
-        }
-    }
-
-    private fun holdingsOf(client: String): Set<String> =
-        assumed?.takeIf { it.client == client }?.held ?: holdings(client)
-
-    private fun holdersOf(key: String): Collection<String> {
-        val real = holders(key)
-        val assumption = assumed ?: return real
-        val holdsReally = assumption.client in real
-        return when {
-            key in assumption.held == holdsReally -> real
-            holdsReally -> real.filter { it != assumption.client }
-            else -> real + assumption.client
         }
     }
 
@@ -314,14 +317,14 @@ internal class RouteSafety(
                 (ahead.options.isNotEmpty() && ahead.options.all { option -> option.any { isTaken(it, self) } })
 
         fun isTaken(key: String, self: String): Boolean =
-            (self != grantee && key in held) || holdersOf(key).any { it != self && it in waiting }
+            (self != grantee && key in held) || assumed.holdersOf(key).any { it != self && it in waiting }
 
         private fun settle(start: LookAhead) {
             val near = LinkedHashMap<String, LookAhead>()
             val queue = ArrayDeque<String>()
             fun reach(ahead: LookAhead) {
                 ahead.forEachKey { key ->
-                    for (holder in holdersOf(key)) {
+                    for (holder in assumed.holdersOf(key)) {
                         if (holder != grantee && holder !in near) {
                             near[holder] = lookAhead(holder)
                             queue += holder
@@ -348,7 +351,7 @@ internal class RouteSafety(
 
     // [client]'s look-ahead as it stands, kept until it changes (a grant looked at as if made is not kept).
     private fun lookAhead(client: String): LookAhead {
-        if (assumed?.client == client) return lookAhead(client, null, holdingsOf(client))
+        if (client in assumed) return lookAhead(client, null, assumed.holdingsOf(client))
         val version = versions.of(client)
         lookAheads[client]?.takeIf { it.version == version }?.let { return it.ahead }
         return lookAhead(client, null, holdings(client)).also { lookAheads[client] = KnownLookAhead(version, it) }

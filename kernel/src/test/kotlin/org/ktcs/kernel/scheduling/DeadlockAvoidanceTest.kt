@@ -332,4 +332,56 @@ class DeadlockAvoidanceTest : FunSpec({
             f.scheduler.deadHolesAvoided shouldBe 0
         }
     }
+
+    context("two directed squares that share a corner X held by the vehicle that would free it (a hole two moves on)") {
+        // Square A: X -> A1 -> A2 -> A3 -> X; square B: X -> B1 -> B2 -> B3 -> X; a way in E -> A2 and out A2 -> O.
+        // m stands on X bound through A out at O; a3 and b3 wait for X to cross into the other square; b1 and b2 wait
+        // behind b3. n asks for A2 from E. x0 holds A1 and A2 (a long vehicle on its way out) and then leaves.
+        val model = plant("X-A1", "A1-A2", "A2-A3", "A3-X", "X-B1", "B1-B2", "B2-B3", "B3-X", "E-A2", "A2-O")
+
+        test("a grant is held back whose hole only a vehicle can fill that would free a corner nobody can take then") {
+            val f = SchedulerFixture(model)
+            val at = mapOf(
+                "m" to setOf("X"),
+                "a3" to setOf("A3"),
+                "b1" to setOf("B1"),
+                "b2" to setOf("B2"),
+                "b3" to setOf("B3"),
+                "n" to setOf("E"),
+                "x0" to setOf("A1", "A2"),
+            )
+            val v = at.mapValues { (name, points) -> f.client(name).also { f.scheduler.allocateNow(it, points) } }
+            fun claim(name: String, vararg steps: String) = f.scheduler.claim(
+                v.getValue(name),
+                steps.map { setOf(it.substringBefore(":"), it.substringAfter(":")) },
+            )
+            claim("m", "X-A1:A1", "A1-A2:A2", "A2-O:O")
+            claim("a3", "A3-X:X", "X-B1:B1")
+            claim("b1", "B1-B2:B2")
+            claim("b2", "B2-B3:B3")
+            claim("b3", "B3-X:X", "X-A1:A1")
+            claim("n", "E-A2:A2", "A2-A3:A3")
+            f.allocate(v.getValue("n"), "E-A2", "A2")
+            f.allocate(v.getValue("m"), "X-A1", "A1")
+            f.allocate(v.getValue("a3"), "A3-X", "X")
+            f.allocate(v.getValue("b3"), "B3-X", "X")
+            f.allocate(v.getValue("b1"), "B1-B2", "B2")
+            f.allocate(v.getValue("b2"), "B2-B3", "B3")
+
+            // Were n let in, m's only move (to A1) would free X, and a3 and b3 each would then wait, around one square
+            // or the other, for itself: X would stay free for good.
+            f.free(v.getValue("x0"), "A1", "A2")
+
+            v.getValue("n").granted.shouldBeEmpty()
+            f.scheduler.deadHolesAvoided shouldBeGreaterThan 0
+            v.getValue("m").granted shouldContainExactly listOf(setOf("X-A1", "A1"))
+            // m drives on through A2 and out; b3 follows it into A (a3 would close square B).
+            f.free(v.getValue("m"), "X")
+            f.allocate(v.getValue("m"), "A1-A2", "A2")
+            v.getValue("m").granted.last() shouldBe setOf("A1-A2", "A2")
+            f.free(v.getValue("m"), "X-A1", "A1")
+            v.getValue("b3").granted shouldContainExactly listOf(setOf("B3-X", "X"))
+            v.getValue("a3").granted.shouldBeEmpty()
+        }
+    }
 })
