@@ -251,22 +251,8 @@ class DeadlockAvoidanceTest : FunSpec({
 
         fun squares(): Pair<SchedulerFixture, Map<String, RecordingClient>> {
             val f = SchedulerFixture(model)
-            val at = mapOf(
-                "a1" to setOf("A1"),
-                "a2" to setOf("A2"),
-                "a3" to setOf("A3"),
-                "b1" to setOf("B1"),
-                "b3" to setOf("B3"),
-                "n" to setOf("E"),
-                "x0" to setOf("X", "B2"),
-            )
-            val clients = at.mapValues { (name, points) ->
-                f.client(name).also { f.scheduler.allocateNow(it, points) }
-            }
-            fun claim(name: String, vararg steps: String) = f.scheduler.claim(
-                clients.getValue(name),
-                steps.map { setOf(it.substringBefore(":"), it.substringAfter(":")) },
-            )
+            val clients = f.place("a1@A1 a2@A2 a3@A3 b1@B1 b3@B3 n@E x0@X+B2")
+            fun claim(name: String, vararg steps: String) = f.claimSteps(clients.getValue(name), *steps)
             claim("a1", "A1-A2:A2")
             claim("a2", "A2-A3:A3")
             claim("a3", "A3-X:X", "X-B1:B1")
@@ -341,20 +327,8 @@ class DeadlockAvoidanceTest : FunSpec({
 
         test("a grant is held back whose hole only a vehicle can fill that would free a corner nobody can take then") {
             val f = SchedulerFixture(model)
-            val at = mapOf(
-                "m" to setOf("X"),
-                "a3" to setOf("A3"),
-                "b1" to setOf("B1"),
-                "b2" to setOf("B2"),
-                "b3" to setOf("B3"),
-                "n" to setOf("E"),
-                "x0" to setOf("A1", "A2"),
-            )
-            val v = at.mapValues { (name, points) -> f.client(name).also { f.scheduler.allocateNow(it, points) } }
-            fun claim(name: String, vararg steps: String) = f.scheduler.claim(
-                v.getValue(name),
-                steps.map { setOf(it.substringBefore(":"), it.substringAfter(":")) },
-            )
+            val v = f.place("m@X a3@A3 b1@B1 b2@B2 b3@B3 n@E x0@A1+A2")
+            fun claim(name: String, vararg steps: String) = f.claimSteps(v.getValue(name), *steps)
             claim("m", "X-A1:A1", "A1-A2:A2", "A2-O:O")
             claim("a3", "A3-X:X", "X-B1:B1")
             claim("b1", "B1-B2:B2")
@@ -385,3 +359,14 @@ class DeadlockAvoidanceTest : FunSpec({
         }
     }
 })
+
+/** Clients standing where [placement] says: `name@POINT` or `name@POINT+POINT`, separated by spaces. */
+private fun SchedulerFixture.place(placement: String): Map<String, RecordingClient> =
+    placement.split(" ").associate { entry ->
+        val name = entry.substringBefore("@")
+        name to client(name).also { scheduler.allocateNow(it, entry.substringAfter("@").split("+").toSet()) }
+    }
+
+/** Claims [steps] for [client], each `path:point`. */
+private fun SchedulerFixture.claimSteps(client: RecordingClient, vararg steps: String) =
+    scheduler.claim(client, steps.map { setOf(it.substringBefore(":"), it.substringAfter(":")) })
