@@ -27,9 +27,11 @@ internal object TrafficTimers {
     const val PARK_TEST_PATIENCE_MILLIS = 3_000L
 
     /**
-     * How long (vehicle time) a grant may be held back for a dead hole ([RouteSafety.leavesDeadHole]) before the local
-     * rule alone decides it: a safety valve for two grants each held back for a hole the other could take, or for a
-     * hole only a paused vehicle could take. The vehicle that can take a hole normally does so within a step or two.
+     * How long (vehicle time) a grant may be held back before the local rule alone decides it, without the dead-hole
+     * check ([RouteSafety.leavesDeadHole]): a safety valve for two grants each held back for a hole the other could
+     * take, or for a hole only a paused vehicle could take. The vehicle that can take a hole normally does so within a
+     * step or two. It counts from the request's first refusal of any kind (counting only the wait for a dead hole was
+     * tried: developer's guide, section 12, "Tried in session 29").
      */
     const val DEAD_HOLE_PATIENCE_MILLIS = 10_000L
 }
