@@ -105,10 +105,14 @@ internal class RouteSafety(
     fun granted(client: String, keys: Set<String>) {
         changed(client)
         refusals.forget(client)
-        val route = routes[client] ?: return
+        val index = claimedStep(client, keys)
+        if (index >= 0) routes[client]?.removeAt(index)
+    }
+
+    // The index of [client]'s first claimed step with exactly [keys] (corridor need keys aside), -1 if none.
+    private fun claimedStep(client: String, keys: Set<String>): Int {
         val physical = physicalOf(keys)
-        val index = route.indexOfFirst { it.physical == physical }
-        if (index >= 0) route.removeAt(index)
+        return routes[client]?.indexOfFirst { it.physical == physical } ?: -1
     }
 
     /**
@@ -175,8 +179,7 @@ internal class RouteSafety(
     fun leavesDeadHole(client: String, keys: Set<String>, behind: Set<String>): Boolean {
         if (keys.any(exits::isTwoWay)) return false
         val held = keysHeldAfter(keys, behind)
-        val physical = physicalOf(keys)
-        val granted = routes[client]?.indexOfFirst { it.physical == physical } ?: -1
+        val granted = claimedStep(client, keys)
         val holes = assume(client, held, granted) { holesAhead(client) }
         if (holes.isEmpty()) return false
         val next = routes[client]?.withIndex()?.firstOrNull { it.index != granted }?.value
@@ -207,9 +210,7 @@ internal class RouteSafety(
         val after = keysHeldAfter(requester.keys, requester.behind)
         val vacated = assumed.holdingsOf(requester.client).filter { it !in after && exits.isPoint(it) }
         if (vacated.isEmpty()) return false
-        val physical = physicalOf(requester.keys)
-        val index = routes[requester.client]?.indexOfFirst { it.physical == physical } ?: -1
-        return assume(requester.client, after, index) {
+        return assume(requester.client, after, claimedStep(requester.client, requester.keys)) {
             vacated.any { point ->
                 val takers = requesters(point).filter { it.client != requester.client }
                 takers.isNotEmpty() && takers.none { isSafeFor(it) }
