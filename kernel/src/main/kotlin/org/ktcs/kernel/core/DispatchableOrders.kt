@@ -48,6 +48,11 @@ internal class DispatchableOrders(
         val before = orders.put(order.name, order)
         when {
             before == null -> trigger.requestForNewOrder(order.name)
+
+            // Given its vehicle and routes, the order leaves the dispatchable ones in the same kernel task: the
+            // assignment changed nothing another order could be given by.
+            order.processingVehicle != null && before.processingVehicle == null -> Unit
+
             !before.sameForDispatching(order) -> trigger.request()
         }
     }

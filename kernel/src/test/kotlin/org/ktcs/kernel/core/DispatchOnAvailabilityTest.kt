@@ -80,6 +80,31 @@ class DispatchOnAvailabilityTest : FunSpec({
         }
     }
 
+    test("an order given to a vehicle asks for no full run: its routes change as it leaves the waiting orders") {
+        var fullRuns = 0
+        var runsOnChanges = 0
+        val counted = module {
+            single<KernelDefaults> {
+                val scope = this
+                object : KernelDefaults {
+                    override fun dispatcher(): Dispatcher = CountingDispatcher(
+                        DefaultDispatcher(scope.get(), scope.get(), scope.get()),
+                    ) { full -> if (full) fullRuns++ else runsOnChanges++ }
+                }
+            }
+        }
+        SimulationKernel(demo, config, listOf(drivers.module, counted)).use { kernel ->
+            kernel.now { }
+            val fullBefore = fullRuns
+            kernel.now { createTransportOrder(TransportOrderCreation("T", trip, intendedVehicle = "Vehicle-01")) }
+            kernel.state("T") shouldBe TransportOrderState.BEING_PROCESSED
+            kernel.now { }
+
+            runsOnChanges shouldBeGreaterThan 0
+            fullRuns shouldBe fullBefore
+        }
+    }
+
     test("a dispensable order replaced by real work says so in its history") {
         SimulationKernel(demo, config, listOf(drivers.module)).use { kernel ->
             val far = listOf(Destination("Goods out 02", "NOP"))
@@ -95,20 +120,20 @@ class DispatchOnAvailabilityTest : FunSpec({
     }
 })
 
-/** The kernel's dispatcher, counting its runs. */
-private class CountingDispatcher(private val dispatcher: DefaultDispatcher, private val ran: () -> Unit) :
+/** The kernel's dispatcher, counting its runs (full runs with `true`). */
+private class CountingDispatcher(private val dispatcher: DefaultDispatcher, private val ran: (Boolean) -> Unit) :
     IncrementalDispatcher {
     override fun initialize() = dispatcher.initialize()
 
     override fun terminate() = dispatcher.terminate()
 
     override fun dispatch() {
-        ran()
+        ran(true)
         dispatcher.dispatch()
     }
 
     override fun dispatchChanges(newOrders: Collection<String>) {
-        ran()
+        ran(false)
         dispatcher.dispatchChanges(newOrders)
     }
 }
