@@ -89,7 +89,7 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
             objects.mapNotNull { vehicle ->
                 val name = vehicle.name ?: return@mapNotNull null
                 val steps = vehicle.allocatedResources.orEmpty().also { allocatedSteps[name] = it }
-                FleetConflicts.Standing(name, steps.flatten().toSet(), vehicle.currentPosition)
+                FleetConflicts.Standing(name, steps.flatten().toSet(), vehicle.point)
             },
         )
     }
@@ -123,12 +123,13 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
     /** A vehicle's change; [dropped] steps of its allocations were passed (said instead of sending the rest). */
     private fun onVehicle(vehicle: Observed, dropped: Int?) {
         val name = vehicle.name ?: return
-        // Left out as unchanged (the subscription asks for that), the resources are the ones the vehicle held before.
+        // Left out as unchanged (the subscription asks for that), the resources and the point are the vehicle's before.
         val before = allocatedSteps[name].orEmpty()
         val steps = vehicle.allocatedResources ?: dropped?.let { before.drop(it) } ?: before
         if (steps !== before) allocatedSteps[name] = steps
         val held = if (steps === before) fleet.held(name) else steps.flatten().toSet()
-        fleet.vehicle(FleetConflicts.Standing(name, held, vehicle.currentPosition))
+        val point = if (vehicle.sendsPosition) vehicle.point else fleet.position(name)
+        fleet.vehicle(FleetConflicts.Standing(name, held, point))
     }
 
     private fun count(message: WatchedMessage, chars: Int) = synchronized(lock) {
@@ -178,10 +179,10 @@ class EventWatcher(client: BenchClient) : AutoCloseable {
             return text
         }
 
-        // As the browser overview subscribes: only a removed object's previous state, no unchanged large fields,
+        // As the browser overview subscribes: only a removed object's previous state, only the fields that changed,
         // resource lists that lost their first steps as the number lost.
         const val SUBSCRIPTION =
             """{"type":"subscribe","topics":["vehicles","transportOrders","notifications"],"previous":false,""" +
-                """"omitUnchanged":true,"shortenedLists":true}"""
+                """"onlyChanged":true,"shortenedLists":true}"""
     }
 }

@@ -24,6 +24,9 @@ internal class FleetConflicts {
     /** What [name] holds as last seen. */
     fun held(name: String): Set<String> = allocations[name].orEmpty()
 
+    /** The point the vehicle [name] stood on when it was last placed, if any. */
+    fun position(name: String): String? = positions[name]
+
     /** A snapshot replaces the whole fleet at once: checking it vehicle by vehicle against older states would not. */
     fun snapshot(vehicles: List<Standing>) {
         allocations.clear()

@@ -13,6 +13,7 @@ import org.ktcs.api.event.VehicleEvent
 import org.ktcs.api.model.Vehicle
 import org.ktcs.api.order.TransportOrder
 import org.ktcs.api.order.TransportOrderState
+import org.ktcs.kernel.web.ws.ChangedFields
 import org.ktcs.kernel.web.ws.Unchanged
 import org.ktcs.kernel.web.ws.WsTopics
 import java.time.Instant
@@ -37,7 +38,7 @@ class WatchedMessageTest : FunSpec({
         message.type shouldBe "event"
         message.topic shouldBe "vehicles"
         message.current!!.name shouldBe "Vehicle-01"
-        message.current!!.currentPosition shouldBe "Point-1"
+        message.current!!.point shouldBe "Point-1"
         message.current!!.allocatedResources shouldBe
             listOf(listOf("Point-1"), listOf("Point-1 --- Point-2", "Point-2"))
     }
@@ -49,8 +50,25 @@ class WatchedMessageTest : FunSpec({
         val released = sent(VehicleEvent(driving, driving.copy(allocatedResources = emptyList())), omitUnchanged = true)
 
         moved.current!!.allocatedResources.shouldBeNull()
-        moved.current!!.currentPosition.shouldBeNull()
+        moved.current!!.point.shouldBeNull()
         released.current!!.allocatedResources shouldBe emptyList()
+    }
+
+    test("with onlyChanged, a vehicle that left its point reads as on none, one that did not move as not saying") {
+        val driving = Vehicle("Vehicle-01", currentPosition = "Point-1", allocatedResources = listOf(setOf("Point-1")))
+        fun sentChanged(event: VehicleEvent) = WatchedMessage.parse(
+            WsTopics.change(event)!!.eventBytes(1, withPrevious = false, changed = ChangedFields.of(event))
+                .decodeToString(),
+        )!!.current!!
+
+        val left = sentChanged(VehicleEvent(driving, driving.copy(currentPosition = null)))
+        val paused = sentChanged(VehicleEvent(driving, driving.copy(paused = true)))
+        val arrived = sentChanged(VehicleEvent(driving, driving.copy(currentPosition = "Point-2")))
+
+        (left.sendsPosition to left.point) shouldBe (true to null)
+        (paused.sendsPosition to paused.point) shouldBe (false to null)
+        paused.allocatedResources.shouldBeNull()
+        (arrived.sendsPosition to arrived.point) shouldBe (true to "Point-2")
     }
 
     test("allocations that lost their first steps read as the number lost") {

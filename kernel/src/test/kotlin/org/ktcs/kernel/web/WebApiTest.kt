@@ -328,4 +328,29 @@ class WebApiTest : FunSpec({
             application.stop()
         }
     }
+
+    test("with onlyChanged, an event of an order that was there before has its name and what changed, nothing else") {
+        val (application, base) = start()
+        try {
+            val socket = WsTestClient(http, base)
+            socket.send("""{"type":"subscribe","topics":["transportOrders"],"previous":false,"onlyChanged":true}""")
+            socket.next()["type"]!!.jsonPrimitive.content shouldBe "snapshot"
+            call("POST", "$base/transportOrders/C1", order).statusCode() shouldBe 200
+            val events = generateSequence { socket.next() }.filter { it["type"]!!.jsonPrimitive.content == "event" }
+                .take(3).toList()
+
+            events.first()["current"]!!.jsonObject.keys shouldContain "driveOrders"
+            // RAW -> ACTIVE -> DISPATCHABLE: the state, and its history entry, and nothing left out is listed.
+            events.drop(1).map { it["current"]!!.jsonObject["state"]!!.jsonPrimitive.content } shouldBe
+                listOf("ACTIVE", "DISPATCHABLE")
+            events.drop(1).forEach {
+                it["unchanged"] shouldBe null
+                it["current"]!!.jsonObject.keys shouldNotContain "driveOrders"
+                it["current"]!!.jsonObject.keys shouldNotContain "creationTime"
+            }
+            socket.close()
+        } finally {
+            application.stop()
+        }
+    }
 })

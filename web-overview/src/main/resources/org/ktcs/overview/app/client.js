@@ -3,6 +3,8 @@
 const TOPICS = ['vehicles', 'transportOrders', 'orderSequences', 'plantModel', 'notifications', 'driverEvents'];
 // Topics whose objects are a list in arrival order (the latest kept), not a map by name.
 const LIST_TOPICS = new Set(['notifications', 'driverEvents']);
+// The topics whose events carry only what changed of an object (onlyChanged): the others send whole objects.
+const MERGED_TOPICS = new Set(['vehicles', 'transportOrders']);
 const RECONNECT_DELAYS_MS = [500, 1000, 2000, 5000];
 
 /** An API error: the message joins the API's error array. */
@@ -90,10 +92,11 @@ export class KtcsClient {
     this.socket = socket;
     socket.onopen = () => {
       this.attempt = 0;
-      // Only a removed object's previous state is used (its name), so the others are not sent at all; nor are the
-      // large fields that did not change (an order's routes while it advances step by step): applyEvent keeps them.
+      // Only a removed object's previous state is used (its name), so the others are not sent at all; nor are a
+      // vehicle's or an order's fields that did not change (an order's routes while it advances step by step):
+      // applyEvent merges what changed into the object it has.
       socket.send(JSON.stringify({
-        type: 'subscribe', topics: TOPICS, previous: false, omitUnchanged: true, shortenedLists: true,
+        type: 'subscribe', topics: TOPICS, previous: false, onlyChanged: true, shortenedLists: true,
       }));
       this.setConnected(true);
     };
@@ -145,18 +148,22 @@ export class KtcsClient {
     else this.state.set(topic, new Map(objects.map((object) => [object.name, object])));
   }
 
-  applyEvent({ topic, previous, current, unchanged, shortened }) {
+  applyEvent(message) {
+    const { topic, previous, unchanged, shortened } = message;
     const state = this.state.get(topic);
     if (!state) return;
-    // The fields left out as unchanged are put back from the object's state before, and the lists left out as
-    // shortened are cut from it, so listeners see whole objects.
-    if ((unchanged || shortened) && current && !LIST_TOPICS.has(topic)) {
-      const before = state.get(current.name);
-      if (before) {
-        for (const field of unchanged ?? []) current[field] = before[field];
-        for (const [field, dropped] of Object.entries(shortened ?? {})) current[field] = before[field].slice(dropped);
+    // A vehicle's or an order's event has only what changed: it is merged into the object's state before, the
+    // fields left out as unchanged are put back from it and the lists left out as shortened are cut from it, so
+    // listeners see whole objects.
+    const before = message.current && MERGED_TOPICS.has(topic) ? state.get(message.current.name) : undefined;
+    if (before) {
+      message.current = { ...before, ...message.current };
+      for (const field of unchanged ?? []) message.current[field] = before[field];
+      for (const [field, dropped] of Object.entries(shortened ?? {})) {
+        message.current[field] = before[field].slice(dropped);
       }
     }
+    const { current } = message;
     if (LIST_TOPICS.has(topic)) {
       state.push(current);
       if (state.length > 1000) state.shift();

@@ -33,4 +33,7 @@ internal interface MarkedJson {
 
     /** The object without its top-level [fields]. */
     fun without(fields: List<String>): ByteArray
+
+    /** The object with only its top-level [fields], those it leaves out while they are `null` written as `null`. */
+    fun only(fields: List<String>): ByteArray
 }

@@ -16,6 +16,9 @@ internal class JsonFields<F : Enum<F>>(val all: Array<F>, wireName: (F) -> Strin
 
     fun bitOf(field: F): Int = 1 shl field.ordinal
 
+    /** The bits of all fields. */
+    val allBits: Int = all.fold(0) { bits, field -> bits or bitOf(field) }
+
     /** The bits of the fields named [wireNames]; names of no field are ignored. */
     fun bitsOf(wireNames: List<String>): Int =
         wireNames.fold(0) { bits, name -> bits or (byWireName[name]?.let(::bitOf) ?: 0) }
@@ -30,7 +33,13 @@ internal abstract class FieldByFieldJson<F : Enum<F>>(private val fields: JsonFi
 
     override fun without(fields: List<String>): ByteArray = write(this.fields.bitsOf(fields))
 
-    /** Whether [field] is in the object at all: kotlinx leaves some fields out while they are `null`. */
+    override fun only(fields: List<String>): ByteArray =
+        write(this.fields.allBits and this.fields.bitsOf(fields).inv(), absentAsNull = true)
+
+    /**
+     * Whether [field] is in the object at all: kotlinx leaves some fields out while they are `null`. A field that is not
+     * must write `null` when asked to (see [only]).
+     */
     protected open fun isPresent(field: F): Boolean = true
 
     protected abstract fun writeValue(field: F, out: Utf8JsonOut)
@@ -38,13 +47,16 @@ internal abstract class FieldByFieldJson<F : Enum<F>>(private val fields: JsonFi
     /** The bytes [writeValue] writes for [field]. */
     protected abstract fun sizeOfValue(field: F): Int
 
-    /** The object without the fields whose bits ([JsonFields.bitOf]) are set in [omitted]. */
-    private fun write(omitted: Int): ByteArray {
-        val out = Utf8JsonOut(size(omitted))
+    /**
+     * The object without the fields whose bits ([JsonFields.bitOf]) are set in [omitted]; with [absentAsNull], a field
+     * that is left out while it is `null` is written as `null` (a client merging changes learns that it went).
+     */
+    private fun write(omitted: Int, absentAsNull: Boolean = false): ByteArray {
+        val out = Utf8JsonOut(size(omitted, absentAsNull))
         out.byte(OPEN_BRACE)
         var written = 0
         for (field in fields.all) {
-            if (!isWritten(field, omitted)) continue
+            if (!isWritten(field, omitted, absentAsNull)) continue
             if (written++ > 0) out.byte(COMMA)
             out.raw(fields.keyOf(field))
             writeValue(field, out)
@@ -53,18 +65,19 @@ internal abstract class FieldByFieldJson<F : Enum<F>>(private val fields: JsonFi
         return out.toByteArray()
     }
 
-    private fun size(omitted: Int): Int {
+    private fun size(omitted: Int, absentAsNull: Boolean): Int {
         var size = 2
         var written = 0
         for (field in fields.all) {
-            if (!isWritten(field, omitted)) continue
+            if (!isWritten(field, omitted, absentAsNull)) continue
             if (written++ > 0) size++
             size += fields.keyOf(field).size + sizeOfValue(field)
         }
         return size
     }
 
-    private fun isWritten(field: F, omitted: Int) = omitted and fields.bitOf(field) == 0 && isPresent(field)
+    private fun isWritten(field: F, omitted: Int, absentAsNull: Boolean) =
+        omitted and fields.bitOf(field) == 0 && (absentAsNull || isPresent(field))
 
     private companion object {
         const val OPEN_BRACE = '{'.code.toByte()

@@ -16,7 +16,10 @@ const val WS_PROTOCOL_VERSION = 1
  * out the large fields that did not change (an order's drive orders, a vehicle's claimed and allocated resources, ...)
  * and names them in [WsEvent.unchanged]: the client keeps them from the object's state before. With [shortenedLists]
  * as well, a vehicle's resource list that is the list before without its first entries is left out too and
- * [WsEvent.shortened] says how many entries the client drops from the front of the list it has.
+ * [WsEvent.shortened] says how many entries the client drops from the front of the list it has. With [onlyChanged], an
+ * event's `current` of a vehicle or transport order that was there before has its `name` and only the fields whose
+ * values changed (a field that became `null` is sent as `null`), and no `unchanged` list: the client merges it into
+ * the state it has. A driving vehicle's event is then a few dozen bytes of its own.
  */
 @Serializable
 data class WsClientMessage(
@@ -25,6 +28,7 @@ data class WsClientMessage(
     val previous: Boolean = true,
     val omitUnchanged: Boolean = false,
     val shortenedLists: Boolean = false,
+    val onlyChanged: Boolean = false,
 )
 
 /** What the server says. */

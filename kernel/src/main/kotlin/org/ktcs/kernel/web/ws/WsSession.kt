@@ -36,6 +36,7 @@ class WsSession internal constructor(
     private var withPrevious = true
     private var omitUnchanged = false
     private var shortenedLists = false
+    private var onlyChanged = false
     private var sequence = 0L
 
     suspend fun run() = coroutineScope {
@@ -49,6 +50,7 @@ class WsSession internal constructor(
                 withPrevious = message.previous
                 omitUnchanged = message.omitUnchanged
                 shortenedLists = message.shortenedLists
+                onlyChanged = message.onlyChanged
                 feed = launch { streamForever() }
             }
         } catch (error: FrameTooBigException) {
@@ -70,8 +72,10 @@ class WsSession internal constructor(
         if (message.type != "subscribe") {
             return null.also { send(WsError("unknown message type '${message.type}'; expected 'subscribe'")) }
         }
-        if (message.shortenedLists && !message.omitUnchanged) {
-            return null.also { send(WsError("shortenedLists needs omitUnchanged: the client keeps the lists it cuts")) }
+        if (message.shortenedLists && !message.omitUnchanged && !message.onlyChanged) {
+            return null.also {
+                send(WsError("shortenedLists needs omitUnchanged or onlyChanged: the client keeps the lists it cuts"))
+            }
         }
         if (message.topics.isEmpty()) {
             return null.also { send(WsError("subscribe needs topics, one or more of $KNOWN_TOPICS")) }
@@ -146,9 +150,10 @@ class WsSession internal constructor(
         if (wanted.isEmpty()) return
         for (event in WsBatch.coalesce(wanted)) {
             val change = WsTopics.change(event, encoded) ?: continue
-            val unchanged = if (omitUnchanged) Unchanged.fieldsOf(event) else emptyList()
+            val changed = if (onlyChanged) ChangedFields.of(event) else null
+            val unchanged = if (omitUnchanged && changed == null) Unchanged.fieldsOf(event) else emptyList()
             val shortened = if (shortenedLists) Unchanged.shortenedOf(event) else emptyMap()
-            socket.send(Frame.Text(true, change.eventBytes(sequence++, withPrevious, unchanged, shortened)))
+            socket.send(Frame.Text(true, change.eventBytes(sequence++, withPrevious, unchanged, shortened, changed)))
         }
         flush()
     }

@@ -109,6 +109,7 @@ internal class Change(
     currentOf: () -> ByteArray?,
     private val removed: Boolean,
     private val currentWithout: ((List<String>) -> ByteArray)? = null,
+    private val currentOnly: ((List<String>) -> ByteArray)? = null,
 ) {
     constructor(topic: WsTopic, previous: ByteArray?, current: ByteArray?) :
         this(topic, { previous }, { current }, removed = current == null)
@@ -123,21 +124,26 @@ internal class Change(
      * copying them is all a session does per event, however many sessions follow it. Without [withPrevious], `previous`
      * is `null` unless the object was removed. The fields named in [unchanged] are left out of `current` (a cut of its
      * bytes, made by each session that asks for it) and listed in `unchanged`; the lists in [shortened] are left out
-     * and listed in `shortened` with how many entries they lost from their front.
+     * and listed in `shortened` with how many entries they lost from their front. With [changed] (the fields that
+     * changed, for a client that subscribed with `onlyChanged`), `current` has the object's `name` and those fields
+     * but for the [shortened] lists, and no `unchanged` list goes with it.
      */
     fun eventBytes(
         seq: Long,
         withPrevious: Boolean = true,
         unchanged: List<String> = emptyList(),
         shortened: Map<String, Int> = emptyMap(),
+        changed: List<String>? = null,
     ): ByteArray {
         val head = utf8("""{"type":"event","topic":"${topic.wireName}","seq":$seq,"previous":""")
         // A client that asked for no previous states still needs a removed object's, to know which one went.
         val previous = if (withPrevious || removed) previous ?: NULL else NULL
-        val left = if (removed) emptyList() else unchanged
+        val only = changed?.takeUnless { removed || currentOnly == null }
+        val left = if (removed || only != null) emptyList() else unchanged
         val cut = if (removed) emptyMap() else shortened
         val current = when {
             removed -> NULL
+            only != null -> currentOnly!!(listOf(NAME) + only.filter { it !in cut })
             left.isEmpty() && cut.isEmpty() -> current!!
             else -> (left + cut.keys).let { currentWithout?.invoke(it) ?: withoutFields(current!!, it) }
         }
@@ -169,6 +175,7 @@ internal class Change(
 
     companion object {
         private val NULL = utf8("null")
+        private const val NAME = "name"
         private val EMPTY = ByteArray(0)
         private val UNCHANGED_LISTS = ConcurrentHashMap<List<String>, ByteArray>()
         private val CURRENT = utf8(""","current":""")
@@ -183,6 +190,7 @@ internal class Change(
                 { current?.full },
                 removed = event.current == null,
                 currentWithout = { fields -> current!!.without(fields) },
+                currentOnly = { fields -> current!!.only(fields) },
             )
         }
 
