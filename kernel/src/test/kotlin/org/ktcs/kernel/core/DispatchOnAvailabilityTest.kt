@@ -47,18 +47,7 @@ class DispatchOnAvailabilityTest : FunSpec({
 
     test("a vehicle busy with an order it may not leave runs no dispatcher when it reports state or energy") {
         var runs = 0
-        val counted = module {
-            single<KernelDefaults> {
-                val scope = this
-                object : KernelDefaults {
-                    override fun dispatcher(): Dispatcher = CountingDispatcher(
-                        DefaultDispatcher(scope.get(), scope.get(), scope.get()),
-                    ) {
-                        runs++
-                    }
-                }
-            }
-        }
+        val counted = countingDispatcher { runs++ }
         SimulationKernel(demo, config, listOf(drivers.module, counted)).use { kernel ->
             kernel.now { createTransportOrder(TransportOrderCreation("T", trip, intendedVehicle = "Vehicle-01")) }
             kernel.state("T") shouldBe TransportOrderState.BEING_PROCESSED
@@ -83,16 +72,7 @@ class DispatchOnAvailabilityTest : FunSpec({
     test("an order given to a vehicle asks for no full run: its routes change as it leaves the waiting orders") {
         var fullRuns = 0
         var runsOnChanges = 0
-        val counted = module {
-            single<KernelDefaults> {
-                val scope = this
-                object : KernelDefaults {
-                    override fun dispatcher(): Dispatcher = CountingDispatcher(
-                        DefaultDispatcher(scope.get(), scope.get(), scope.get()),
-                    ) { full -> if (full) fullRuns++ else runsOnChanges++ }
-                }
-            }
-        }
+        val counted = countingDispatcher { full -> if (full) fullRuns++ else runsOnChanges++ }
         SimulationKernel(demo, config, listOf(drivers.module, counted)).use { kernel ->
             kernel.now { }
             val fullBefore = fullRuns
@@ -119,6 +99,17 @@ class DispatchOnAvailabilityTest : FunSpec({
         }
     }
 })
+
+/** A module that gives the kernel its default dispatcher, telling [ran] of each run (`true`: a full run). */
+private fun countingDispatcher(ran: (Boolean) -> Unit) = module {
+    single<KernelDefaults> {
+        val scope = this
+        object : KernelDefaults {
+            override fun dispatcher(): Dispatcher =
+                CountingDispatcher(DefaultDispatcher(scope.get(), scope.get(), scope.get()), ran)
+        }
+    }
+}
 
 /** The kernel's dispatcher, counting its runs (full runs with `true`). */
 private class CountingDispatcher(private val dispatcher: DefaultDispatcher, private val ran: (Boolean) -> Unit) :
