@@ -54,4 +54,12 @@ public interface Router : KernelComponent {
      */
     public fun costsFrom(vehicle: Vehicle, sourcePoint: String): (String) -> Long? =
         { destination -> routes(vehicle, sourcePoint, destination).firstOrNull()?.costs }
+
+    /**
+     * The costs of the cheapest routes to [destinationPoint] for [vehicle], as a function of the source point (`null`:
+     * no route). A router should answer all sources from one search backwards, e.g. to rank many vehicles by their
+     * distance to an order's first destination; this default asks [costsFrom] once per source.
+     */
+    public fun costsTo(vehicle: Vehicle, destinationPoint: String): (String) -> Long? =
+        { source -> costsFrom(vehicle, source)(destinationPoint) }
 }

@@ -134,8 +134,18 @@ internal class FreeOrderAssignment(
     private fun ordersChoose(orders: List<TransportOrder>, vehicles: List<Vehicle>) {
         for (order in orders.sortedWith(run.priorities.orders)) {
             val candidates = vehicles.filter { !run.isAssigned(it) && order.isFor(it) }.map { Candidate(it, order) }
-            bestCandidate(candidates, run.priorities.vehicleCandidates, ::assess)?.let(::assign)
+            bestCandidate(candidates, run.priorities.vehicleCandidates, ::assess, ::costsFromStart)?.let(::assign)
         }
+    }
+
+    /**
+     * The same lower bound as [costsToStart] for an order choosing among vehicles: one search backwards from each
+     * point of its first destination answers it for every vehicle (of one routing graph).
+     */
+    private fun costsFromStart(candidate: Candidate): Long? {
+        val target = candidate.order.driveOrders.firstOrNull()?.destination?.target ?: return null
+        val points = run.model.location(target)?.links?.map { it.point } ?: listOf(target)
+        return points.mapNotNull { run.routes.costsTo(candidate.vehicle, it) }.minOrNull()
     }
 
     private fun TransportOrder.isFor(vehicle: Vehicle): Boolean =

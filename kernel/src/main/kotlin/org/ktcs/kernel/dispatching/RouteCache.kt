@@ -30,6 +30,12 @@ internal class RouteCache(private val router: Router) {
         }
     }
 
+    /** The costs of the cheapest route from [vehicle]'s position to [point], from a search backwards from [point]. */
+    fun costsTo(vehicle: Vehicle, point: String): Long? {
+        val position = vehicle.currentPosition ?: return null
+        return pointCosts.memo(Key(vehicle.name, position, point)) { router.costsTo(vehicle, point)(position) }
+    }
+
     private inline fun <V> HashMap<Key, V?>.memo(key: Key, compute: () -> V?): V? =
         if (containsKey(key)) get(key) else compute().also { put(key, it) }
 }

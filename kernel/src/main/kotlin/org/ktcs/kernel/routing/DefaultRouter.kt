@@ -74,6 +74,9 @@ class DefaultRouter(private val configuration: RouterConfiguration = RouterConfi
     override fun costsFrom(vehicle: Vehicle, sourcePoint: String): (String) -> Long? =
         searchFor(vehicle, sourcePoint, emptySet()).costsFrom(sourcePoint)
 
+    override fun costsTo(vehicle: Vehicle, destinationPoint: String): (String) -> Long? =
+        graphs.searchFor(configuration.graphKeyOf(vehicle)).costsTo(destinationPoint)
+
     private fun searchFor(vehicle: Vehicle, sourcePoint: String, avoided: Collection<String>): RouteSearch {
         val search = graphs.searchFor(configuration.graphKeyOf(vehicle))
         return search.avoiding(AvoidedResources.of(graphs.model, avoided, sourcePoint))

@@ -61,6 +61,36 @@ internal class IndexedGraph(graph: RoutingGraph) {
      */
     fun search(source: Int, excluded: Exclusion?): ShortestPathTree = ShortestPathTree(this, source, excluded)
 
+    // The edges into point `p` are `incoming[firstIncoming[p] until firstIncoming[p + 1]]` (edge indices): made for the
+    // first search backwards, which most graphs never get.
+    private val firstIncoming: IntArray by lazy(LazyThreadSafetyMode.NONE) {
+        val first = IntArray(size + 1)
+        edgeTarget.forEach { first[it + 1]++ }
+        for (point in 0 until size) first[point + 1] += first[point]
+        first
+    }
+    private val incoming: IntArray by lazy(LazyThreadSafetyMode.NONE) {
+        val next = firstIncoming.copyOf(size)
+        val into = IntArray(edges.size)
+        for (edge in edges.indices) into[next[edgeTarget[edge]]++] = edge
+        into
+    }
+
+    /** Dijkstra's algorithm backwards from [target]: the costs of the cheapest routes from the other points to it. */
+    fun searchTo(target: Int): CostsToTree = CostsToTree(this, target)
+
+    /** Settles the cheapest point of [frontier] of a search backwards and offers the points with edges into it. */
+    internal fun settlePrevious(tree: CostsToTree, frontier: Frontier) {
+        val point = frontier.poll()
+        val base = tree.costs[point]
+        for (at in firstIncoming[point] until firstIncoming[point + 1]) {
+            val edge = incoming[at]
+            val source = edgeSource[edge]
+            val cost = base + edgeCost[edge]
+            if (frontier.offer(source, cost)) tree.costs[source] = cost
+        }
+    }
+
     /** Settles the cheapest point of [frontier] and offers its neighbours; returns it. */
     internal fun settleNext(tree: ShortestPathTree, frontier: Frontier, excluded: Exclusion?): Int {
         val point = frontier.poll()

@@ -41,6 +41,9 @@ internal class RouteSearch private constructor(
     private val trees: MutableMap<Int, ShortestPathTree> by lazy(LazyThreadSafetyMode.NONE) {
         RecentTrees(maxOf(MIN_KEPT_TREES, KEPT_TREE_POINTS / maxOf(1, indexed.value?.size ?: 1)))
     }
+    private val treesTo: MutableMap<Int, CostsToTree> by lazy(LazyThreadSafetyMode.NONE) {
+        RecentTrees(maxOf(MIN_KEPT_TREES, KEPT_TREE_POINTS / maxOf(1, indexed.value?.size ?: 1)))
+    }
 
     /** The search from [source] (a point of [index]): a kept one if nothing is avoided. */
     private fun treeFrom(index: IndexedGraph, source: String): ShortestPathTree {
@@ -106,6 +109,24 @@ internal class RouteSearch private constructor(
         }
     }
 
+    /**
+     * The cheapest costs from any point to [target]: with Dijkstra's algorithm one search backwards, kept for the most
+     * recently asked targets as the searches forwards are; otherwise one search from each point asked about.
+     */
+    fun costsTo(target: String): (String) -> Long? {
+        if (!graph.containsVertex(target)) return { null }
+        val index = indexed.value?.takeIf { exclusion == null } ?: return { source -> costsFrom(source)(target) }
+        val point = checkNotNull(index.index(target))
+        val tree by lazy(LazyThreadSafetyMode.NONE) { treesTo.getOrPut(point) { index.searchTo(point) } }
+        return { source ->
+            when {
+                source == target -> 0L
+                !graph.containsVertex(source) -> null
+                else -> index.index(source)?.let(tree::costsFrom)
+            }
+        }
+    }
+
     /** Up to [count] cheapest loop-free routes from [source] to [target], cheapest first. */
     fun cheapest(source: String, target: String, count: Int): List<Route> = when {
         !graph.containsVertex(source) || !graph.containsVertex(target) -> emptyList()
@@ -122,8 +143,8 @@ private const val MIN_KEPT_TREES = 16
 private const val KEPT_TREE_POINTS = 500_000
 
 /** The [capacity] most recently used searches by source point, in access order. */
-private class RecentTrees(private val capacity: Int) : LinkedHashMap<Int, ShortestPathTree>(capacity, 0.75f, true) {
-    override fun removeEldestEntry(eldest: MutableMap.MutableEntry<Int, ShortestPathTree>): Boolean = size > capacity
+private class RecentTrees<T>(private val capacity: Int) : LinkedHashMap<Int, T>(capacity, 0.75f, true) {
+    override fun removeEldestEntry(eldest: MutableMap.MutableEntry<Int, T>): Boolean = size > capacity
 }
 
 /** The route of a vehicle that is already where it should be: one step without a path, at no cost. */

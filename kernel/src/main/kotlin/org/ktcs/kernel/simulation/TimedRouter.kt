@@ -27,6 +27,11 @@ class TimedRouter(private val router: Router) : Router by router {
         return { destination -> timed { costs(destination) } }
     }
 
+    override fun costsTo(vehicle: Vehicle, destinationPoint: String): (String) -> Long? {
+        val costs = router.costsTo(vehicle, destinationPoint)
+        return { source -> timed { costs(source) } }
+    }
+
     private inline fun <T> timed(block: () -> T): T {
         val start = System.nanoTime()
         try {

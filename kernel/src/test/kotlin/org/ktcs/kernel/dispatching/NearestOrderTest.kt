@@ -60,4 +60,17 @@ class NearestOrderTest : FunSpec({
 
         context.assignedTo("V1") shouldContainExactly listOf("Near1", "Near2", "Near3", "Far")
     }
+
+    test("an order ranking vehicles by routing costs takes the nearest, routing only it") {
+        val context = FakeDispatchContext(plant())
+        // S2 is at F: the vehicle at G is one path away, those at D and H two, the others more.
+        val at = mapOf("V1" to "A", "V2" to "B", "V3" to "H", "V4" to "D", "V5" to "G")
+        context.add(*at.map { (name, point) -> vehicle(name, at = point) }.toTypedArray(), order("T", load("S2")))
+        val nearest = listOf(CandidatePriority.IDLE_FIRST, CandidatePriority.BY_INITIAL_ROUTING_COSTS)
+
+        context.dispatch(assignOnly.copy(vehicleCandidatePriorities = nearest))
+
+        context.assignedOrder("V5") shouldBe "T"
+        context.router.routeOrderCalls shouldBe 1
+    }
 })

@@ -63,6 +63,18 @@ class DefaultRouterPropertyTest : FunSpec({
         }
     }
 
+    test("the costs to a point, from one search backwards, are the cheapest costs from every point") {
+        checkAll(200, gridCases) { case ->
+            val router = case.router()
+            val toDestination = router.costsTo(case.vehicle, case.destination)
+
+            for (point in case.model.points.map { it.name } + "no such point") {
+                toDestination(point) shouldBe case.cheapestCostsFrom(point)[case.destination]
+            }
+            router.costsTo(case.vehicle, "no such point")(case.source) shouldBe null
+        }
+    }
+
     test("order routes visit one linked point per location and are as cheap as trying every combination") {
         checkAll(200, gridCases) { case ->
             val stations = case.model.locations
