@@ -142,7 +142,7 @@ private const val MIN_KEPT_TREES = 16
 /** and as many as hold this many points in all (12 bytes a point, and an unfinished search's frontier: about 6 MB). */
 private const val KEPT_TREE_POINTS = 500_000
 
-/** The [capacity] most recently used searches by source point, in access order. */
+/** The [capacity] most recently used searches by source point (by target point, backwards), in access order. */
 private class RecentTrees<T>(private val capacity: Int) : LinkedHashMap<Int, T>(capacity, 0.75f, true) {
     override fun removeEldestEntry(eldest: MutableMap.MutableEntry<Int, T>): Boolean = size > capacity
 }
