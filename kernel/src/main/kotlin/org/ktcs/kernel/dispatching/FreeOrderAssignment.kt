@@ -125,11 +125,7 @@ internal class FreeOrderAssignment(
      * A lower bound of the costs of [candidate]'s routes: the cheapest route from the vehicle to any point of its
      * first destination (one search per vehicle and run answers it for every order).
      */
-    private fun costsToStart(candidate: Candidate): Long? {
-        val target = candidate.order.driveOrders.firstOrNull()?.destination?.target ?: return null
-        val points = run.model.location(target)?.links?.map { it.point } ?: listOf(target)
-        return points.mapNotNull { run.routes.costs(candidate.vehicle, it) }.minOrNull()
-    }
+    private fun costsToStart(candidate: Candidate): Long? = costsToFirstDestination(candidate, run.routes::costs)
 
     private fun ordersChoose(orders: List<TransportOrder>, vehicles: List<Vehicle>) {
         for (order in orders.sortedWith(run.priorities.orders)) {
@@ -142,10 +138,13 @@ internal class FreeOrderAssignment(
      * The same lower bound as [costsToStart] for an order choosing among vehicles: one search backwards from each
      * point of its first destination answers it for every vehicle (of one routing graph).
      */
-    private fun costsFromStart(candidate: Candidate): Long? {
+    private fun costsFromStart(candidate: Candidate): Long? = costsToFirstDestination(candidate, run.routes::costsTo)
+
+    // The cheapest of [costs] from the candidate's vehicle to the points of its order's first destination.
+    private fun costsToFirstDestination(candidate: Candidate, costs: (Vehicle, String) -> Long?): Long? {
         val target = candidate.order.driveOrders.firstOrNull()?.destination?.target ?: return null
         val points = run.model.location(target)?.links?.map { it.point } ?: listOf(target)
-        return points.mapNotNull { run.routes.costsTo(candidate.vehicle, it) }.minOrNull()
+        return points.mapNotNull { costs(candidate.vehicle, it) }.minOrNull()
     }
 
     private fun TransportOrder.isFor(vehicle: Vehicle): Boolean =

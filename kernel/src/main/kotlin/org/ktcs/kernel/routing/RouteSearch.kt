@@ -38,12 +38,11 @@ internal class RouteSearch private constructor(
     )
 
     private val shortestPaths: ShortestPathAlgorithm<String, RoutingEdge> by lazy { algorithm.on(graph) }
-    private val trees: MutableMap<Int, ShortestPathTree> by lazy(LazyThreadSafetyMode.NONE) {
-        RecentTrees(maxOf(MIN_KEPT_TREES, KEPT_TREE_POINTS / maxOf(1, indexed.value?.size ?: 1)))
+    private val keptTrees: Int by lazy(LazyThreadSafetyMode.NONE) {
+        maxOf(MIN_KEPT_TREES, KEPT_TREE_POINTS / maxOf(1, indexed.value?.size ?: 1))
     }
-    private val treesTo: MutableMap<Int, CostsToTree> by lazy(LazyThreadSafetyMode.NONE) {
-        RecentTrees(maxOf(MIN_KEPT_TREES, KEPT_TREE_POINTS / maxOf(1, indexed.value?.size ?: 1)))
-    }
+    private val trees: MutableMap<Int, ShortestPathTree> by lazy(LazyThreadSafetyMode.NONE) { RecentTrees(keptTrees) }
+    private val treesTo: MutableMap<Int, CostsToTree> by lazy(LazyThreadSafetyMode.NONE) { RecentTrees(keptTrees) }
 
     /** The search from [source] (a point of [index]): a kept one if nothing is avoided. */
     private fun treeFrom(index: IndexedGraph, source: String): ShortestPathTree {

@@ -333,6 +333,11 @@ class WebApiTest : FunSpec({
         val (application, base) = start()
         try {
             val socket = WsTestClient(http, base)
+            socket.send("""{"type":"subscribe","topics":["transportOrders"],"onlyChanged":"yes"}""")
+            val error = socket.next()
+            error["type"]!!.jsonPrimitive.content shouldBe "error"
+            error["message"]!!.jsonPrimitive.content shouldContain "onlyChanged"
+
             socket.send("""{"type":"subscribe","topics":["transportOrders"],"previous":false,"onlyChanged":true}""")
             socket.next()["type"]!!.jsonPrimitive.content shouldBe "snapshot"
             call("POST", "$base/transportOrders/C1", order).statusCode() shouldBe 200
