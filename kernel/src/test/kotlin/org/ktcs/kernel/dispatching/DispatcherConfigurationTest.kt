@@ -15,7 +15,7 @@ class DispatcherConfigurationTest : FunSpec({
                 CandidatePriority.BY_DEADLINE,
                 CandidatePriority.BY_INITIAL_ROUTING_COSTS,
             ),
-            orderCandidateWindow = 10,
+            orderCandidateWindow = 50,
             deadlineAtRiskPeriodMillis = 60_000,
             assignRedundantOrders = false,
             parkIdleVehicles = true,

@@ -33,6 +33,17 @@ class NearestOrderTest : FunSpec({
         choiceBetween(oldest, assignOnly.copy(orderCandidateWindow = 1)) shouldBe "Oldest"
     }
 
+    test("by default the vehicle chooses among the 50 longest-waiting orders") {
+        val context = FakeDispatchContext(plant())
+        context.add(vehicle("V1", at = "G"))
+        val old = (1..49).map { order("Old$it", load("S1"), created = T0.minusSeconds(60L - it)) }
+        context.add(*old.toTypedArray(), order("Near", load("S2")))
+
+        context.dispatch(assignOnly)
+
+        context.assignedOrder("V1") shouldBe "Near"
+    }
+
     test("with window 0 the vehicle chooses among all orders, as openTCS does") {
         val context = FakeDispatchContext(plant())
         context.add(vehicle("V1", at = "G"))
