@@ -299,16 +299,14 @@ class WebApiTest : FunSpec({
         val (application, base) = start()
         try {
             val socket = WsTestClient(http, base)
-            socket.send("""{"type":"subscribe","topics":["transportOrders"],"omitUnchanged":"yes"}""")
-            val error = socket.next()
-            error["type"]!!.jsonPrimitive.content shouldBe "error"
-            error["message"]!!.jsonPrimitive.content shouldContain "omitUnchanged"
+            val wrong = """{"type":"subscribe","topics":["transportOrders"],"omitUnchanged":"yes"}"""
+            socket.shouldRefuse(wrong, "omitUnchanged")
 
-            socket.send("""{"type":"subscribe","topics":["transportOrders"],"previous":false,"omitUnchanged":true}""")
-            socket.next()["type"]!!.jsonPrimitive.content shouldBe "snapshot"
-            call("POST", "$base/transportOrders/U1", order).statusCode() shouldBe 200
-            val events = generateSequence { socket.next() }.filter { it["type"]!!.jsonPrimitive.content == "event" }
-                .take(3).toList()
+            val subscription =
+                """{"type":"subscribe","topics":["transportOrders"],"previous":false,"omitUnchanged":true}"""
+            val events = socket.firstEvents(subscription) {
+                call("POST", "$base/transportOrders/U1", order).statusCode() shouldBe 200
+            }
 
             // A new order comes whole; its next state leaves out its properties, which are as before.
             events.first()["unchanged"] shouldBe null
@@ -333,16 +331,14 @@ class WebApiTest : FunSpec({
         val (application, base) = start()
         try {
             val socket = WsTestClient(http, base)
-            socket.send("""{"type":"subscribe","topics":["transportOrders"],"onlyChanged":"yes"}""")
-            val error = socket.next()
-            error["type"]!!.jsonPrimitive.content shouldBe "error"
-            error["message"]!!.jsonPrimitive.content shouldContain "onlyChanged"
+            val wrong = """{"type":"subscribe","topics":["transportOrders"],"onlyChanged":"yes"}"""
+            socket.shouldRefuse(wrong, "onlyChanged")
 
-            socket.send("""{"type":"subscribe","topics":["transportOrders"],"previous":false,"onlyChanged":true}""")
-            socket.next()["type"]!!.jsonPrimitive.content shouldBe "snapshot"
-            call("POST", "$base/transportOrders/C1", order).statusCode() shouldBe 200
-            val events = generateSequence { socket.next() }.filter { it["type"]!!.jsonPrimitive.content == "event" }
-                .take(3).toList()
+            val subscription =
+                """{"type":"subscribe","topics":["transportOrders"],"previous":false,"onlyChanged":true}"""
+            val events = socket.firstEvents(subscription) {
+                call("POST", "$base/transportOrders/C1", order).statusCode() shouldBe 200
+            }
 
             events.first()["current"]!!.jsonObject.keys shouldContain "driveOrders"
             // RAW -> ACTIVE -> DISPATCHABLE: the state, and its history entry, and nothing left out is listed.
@@ -359,3 +355,19 @@ class WebApiTest : FunSpec({
         }
     }
 })
+
+/** Sends [subscription] and expects, as the next message, an error whose message names [option]. */
+private fun WsTestClient.shouldRefuse(subscription: String, option: String) {
+    send(subscription)
+    val error = next()
+    error["type"]!!.jsonPrimitive.content shouldBe "error"
+    error["message"]!!.jsonPrimitive.content shouldContain option
+}
+
+/** Subscribes with [subscription], expects the snapshot, runs [change] and returns the first three events after it. */
+private fun WsTestClient.firstEvents(subscription: String, change: () -> Unit): List<JsonObject> {
+    send(subscription)
+    next()["type"]!!.jsonPrimitive.content shouldBe "snapshot"
+    change()
+    return generateSequence { next() }.filter { it["type"]!!.jsonPrimitive.content == "event" }.take(3).toList()
+}
