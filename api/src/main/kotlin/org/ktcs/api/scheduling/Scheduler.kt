@@ -176,4 +176,12 @@ public interface SchedulerClient {
      * nothing, suits vehicles that are short compared with the paths.
      */
     public fun heldAfter(resources: Set<String>): Set<String> = emptySet()
+
+    /**
+     * As [heldAfter], two or more steps ahead: what the client will still hold besides the last of [steps] once it has
+     * driven up to it through all of them (none granted yet). The default counts every step but the last as still
+     * covered, which is safe for any length; a client that knows its length answers more closely.
+     */
+    public fun heldAfter(steps: List<Set<String>>): Set<String> =
+        heldAfter(steps.last()) + steps.dropLast(1).flatten() - steps.last()
 }

@@ -210,11 +210,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     private fun heldBackBy(request: Request): Map<String, Set<String>> {
         val since = deferredSince[request.seq] ?: return emptyMap()
         if (clock.elapsedMillis() - since < HELD_BACK_REPORT_MILLIS || request !in deferred) return emptyMap()
-        return safety.blockersAfter(
-            request.client.name,
-            request.keys,
-            keysBehind(request.client, request.resources),
-        )
+        return safety.blockersAfter(request.client.name, request.keys, keysBehind(request.client, request.resources))
     }
 
     // Of what a client blocks, what it holds now but gives up as it drives on does not count.
@@ -255,7 +251,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
             safety.stopsOf(resources),
             resources.lastOrNull()?.let(safety::pointOf),
             resources.firstOrNull()?.let { keysBehind(client, it) }.orEmpty(),
-        )
+        ) { bay -> keysBehind(client, listOf(resources.first(), bay)) }
 
     /** What [client] still needs as deadlock avoidance sees it: its claimed route ahead and its way out. */
     fun needs(client: String): Set<String> = safety.needs(client)
@@ -302,9 +298,12 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     private fun routeKeys(client: String, route: List<Set<String>>): List<Set<String>> =
         corridorSteps.routeKeys(client, route, blocks::keysOf)
 
-    // What [client]'s length still covers behind it once it has driven [resources], as deadlock avoidance counts it.
+    // What [client]'s length still covers behind it once it has driven [resources] (or all of [steps], none granted
+    // yet), as deadlock avoidance counts it.
     private fun keysBehind(client: SchedulerClient, resources: Set<String>): Set<String> =
         blocks.keysOf(client.heldAfter(resources))
+    private fun keysBehind(client: SchedulerClient, steps: List<Set<String>>): Set<String> =
+        blocks.keysOf(client.heldAfter(steps))
 
     // Grants held back for safety may become safe after any change elsewhere; each retry costs one reachability walk.
     private fun retryDeferred() {
@@ -333,7 +332,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
             if (!pending.isHead(request) || !isGrantable(request)) continue
             val behind = keysBehind(request.client, request.resources)
             val refusal = when {
-                !safety.mayGrant(request.client.name, request.keys, behind) -> GrantWait.LOCAL_RULE
+                !mayGrant(request, behind) -> GrantWait.LOCAL_RULE
                 leavesDeadHole(request, behind) -> GrantWait.LOCAL_RULE
                 !parkSafe(request, behind) -> GrantWait.PARK_TEST
                 else -> null
@@ -351,6 +350,11 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
             queue += pending.waitingFor(grant(request))
         }
     }
+
+    private fun mayGrant(request: Request, behind: Set<String>): Boolean =
+        safety.mayGrant(request.client.name, request.keys, behind) {
+            keysBehind(request.client, listOf(request.resources, it))
+        }
 
     private fun leavesDeadHole(request: Request, behind: Set<String>): Boolean {
         val since = deferredSince[request.seq]

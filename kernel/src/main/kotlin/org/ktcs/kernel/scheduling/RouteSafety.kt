@@ -24,24 +24,7 @@ internal class RouteSafety(
     private val holders: (String) -> Collection<String>,
     private val requesters: (key: String) -> Collection<Requester> = { emptyList() },
 ) {
-    /** One claimed step; [stop] is the way out of where it ends if the vehicle stops there for an operation. */
-    private class Step(val keys: Set<String>, val twoWay: Boolean, val stop: Exit?, val intoDeadEnd: Boolean) {
-        /** The step's resources and blocks, without corridor need keys: what holding the step means. */
-        val physical: Set<String> = physicalOf(keys)
-    }
-
-    private class LookAhead(val required: Set<String>, val options: List<Set<String>>) {
-        /** Calls [action] with every key needed: the required ones, then those of each way on. */
-        inline fun forEachKey(action: (String) -> Unit) {
-            required.forEach(action)
-            options.forEach { it.forEach(action) }
-        }
-    }
-
-    // A client's look-ahead as it stands, computed at [version].
-    private class KnownLookAhead(val version: Long, val ahead: LookAhead)
-
-    private val routes = HashMap<String, ArrayDeque<Step>>()
+    private val routes = HashMap<String, ArrayDeque<ClaimedStep>>()
     private val wayOut = HashMap<String, Exit>()
 
     private val assumed = AssumedGrants(holdings, holders)
@@ -73,7 +56,7 @@ internal class RouteSafety(
     fun claim(client: String, route: List<Set<String>>, stops: List<String?>, end: String?) {
         changed(client)
         routes[client] = route.zip(stops).mapTo(ArrayDeque()) { (keys, stop) ->
-            Step(keys, keys.any(exits::isTwoWay), stop?.let(exits::from), stop != null && exits.isDeadEnd(stop))
+            ClaimedStep(keys, keys.any(exits::isTwoWay), stop?.let(exits::from), stop != null && exits.isDeadEnd(stop))
         }
         wayOut[client] = end?.let(exits::from) ?: Exit.NONE
     }
@@ -118,17 +101,27 @@ internal class RouteSafety(
     /**
      * Whether granting [keys] to [client] keeps the waits free of cycles, once the client has driven up to them and
      * holds [keys] and what its length still covers behind it ([behind]); what it holds until then it gives up as it
-     * drives, so waits for that resolve by themselves.
+     * drives, so waits for that resolve by themselves. A step onto the mouth of a free dead-end bay that the claim
+     * turns back in is judged as the client will stand in the bay ([behindInBay]: what its length covers there, given
+     * the bay's step; by default the mouth too).
      */
-    fun mayGrant(client: String, keys: Set<String>, behind: Set<String>): Boolean {
+    fun mayGrant(
+        client: String,
+        keys: Set<String>,
+        behind: Set<String>,
+        behindInBay: (bay: Set<String>) -> Set<String> = { behind + physicalOf(keys) },
+    ): Boolean {
         if (!refusals.stillHolds(client, keys, behind)) {
             val held = keysHeldAfter(keys, behind)
-            val walk = Walk(client, held)
-            if (!walk.isBlocked(lookAhead(client, keys, held), client)) {
+            val walk = walk(client, held)
+            val witnesses = HashSet<String>()
+            if (!walk.isBlocked(lookAhead(client, keys, held), client) ||
+                maySafelyStopInBay(client, keys, behindInBay, witnesses)
+            ) {
                 refusals.forget(client)
                 return true
             }
-            refusals.keep(client, keys, behind, walk.reached() + client)
+            refusals.keep(client, keys, behind, walk.reached() + witnesses + client)
         }
         heldBack++
         return false
@@ -140,10 +133,30 @@ internal class RouteSafety(
      */
     fun changed(client: String) = versions.changed(client)
 
+    // Whether [client], refused [keys], may have them since its next step turns back in a free dead-end bay (a retreat's
+    // park bay, a station stub): on the bay's mouth it needs only the bay, which no other vehicle can reach past it, so
+    // it is judged as it will stand in the bay, by the bay's way out ([behindInBay]: what its length covers there).
+    // The vehicles looked at are added to [witnesses] (developer's guide, 12, "Session 32").
+    private fun maySafelyStopInBay(
+        client: String,
+        keys: Set<String>,
+        behindInBay: (bay: Set<String>) -> Set<String>,
+        witnesses: MutableSet<String>,
+    ): Boolean {
+        val route = routes[client] ?: return false
+        val index = claimedStep(client, keys).takeIf { it >= 0 } ?: return false
+        val bay = route.getOrNull(index + 1)?.takeIf { it.intoDeadEnd && route.getOrNull(index + 2)?.twoWay != false }
+        val stop = bay?.stop ?: return false
+        bay.physical.flatMapTo(witnesses) { holders(it) }
+        if (bay.physical.any { key -> holders(key).any { it != client } }) return false
+        val walk = walk(client, keysHeldAfter(bay.keys, behindInBay(bay.physical)))
+        return !walk.isBlocked(LookAhead(stop.required, stop.options), client).also { witnesses += walk.reached() }
+    }
+
     // [pinned]: a vehicle that stays where it stands, whatever it needs.
     private fun isSafe(client: String, keys: Set<String>, behind: Set<String>, pinned: String? = null): Boolean {
         val held = keysHeldAfter(keys, behind)
-        return !Walk(client, held, pinned).isBlocked(lookAhead(client, keys, held), client)
+        return !walk(client, held, pinned).isBlocked(lookAhead(client, keys, held), client)
     }
 
     /**
@@ -246,11 +259,11 @@ internal class RouteSafety(
     }
 
     /** Whether [client], as it stands, waits through a chain of waits for itself (only a fresh claim can do that). */
-    fun waitsForItself(client: String): Boolean = Walk(client, holdings(client)).isBlocked(lookAhead(client), client)
+    fun waitsForItself(client: String): Boolean = walk(client, holdings(client)).isBlocked(lookAhead(client), client)
 
     /** What [client], as it stands, needs next and vehicles waiting, through others, for it hold. */
     fun selfBlockers(client: String): Set<String> {
-        val walk = Walk(client, holdings(client))
+        val walk = walk(client, holdings(client))
         val ahead = lookAhead(client)
         if (!walk.isBlocked(ahead, client)) return emptySet()
         val blocked = HashSet<String>()
@@ -261,7 +274,8 @@ internal class RouteSafety(
     /**
      * Whether [client] would wait through a chain of waits for itself if it claimed [route] instead of what it claims
      * now (arguments as for [claim]), or would be held back for good at its first step ([behindFirst]: what its length
-     * covers once there), which the next grant's check would refuse; its claim stays as it is.
+     * covers once there; [behindInBay] as for [mayGrant]), which the next grant's check would refuse; its claim stays
+     * as it is.
      */
     fun wouldWaitForItself(
         client: String,
@@ -269,12 +283,15 @@ internal class RouteSafety(
         stops: List<String?>,
         end: String?,
         behindFirst: Set<String>,
+        behindInBay: (bay: Set<String>) -> Set<String> = { behindFirst + physicalOf(route.firstOrNull().orEmpty()) },
     ): Boolean {
         val oldRoute = routes[client]
         val oldWayOut = wayOut[client]
         claim(client, route, stops, end)
         try {
-            return waitsForItself(client) || route.firstOrNull()?.let { !isSafe(client, it, behindFirst) } == true
+            val first = route.firstOrNull() ?: return waitsForItself(client)
+            return waitsForItself(client) ||
+                (!isSafe(client, first, behindFirst) && !maySafelyStopInBay(client, first, behindInBay, HashSet()))
         } finally {
             if (oldRoute == null) routes.remove(client) else routes[client] = oldRoute
             if (oldWayOut == null) wayOut.remove(client) else wayOut[client] = oldWayOut
@@ -289,66 +306,8 @@ internal class RouteSafety(
         return needs
     }
 
-    /**
-     * One check: which vehicles could never move again while [grantee] holds [held] and stands. The vehicles near
-     * enough to matter are those whose needs the grantee's needs lead to. Among them the ones that can move are found
-     * as a least fixpoint (a vehicle can move once what it needs is free or held by vehicles that can move; for the
-     * ways on, once one of them is), and all others wait. Waiting is thus the greatest fixpoint, not the least: two
-     * vehicles that each need the other only because the grantee holds their one other way on (a vehicle standing
-     * between them on a two-way track, with a bay beside it) wait, though neither waits for the grantee directly.
-     */
-    private inner class Walk(
-        private val grantee: String,
-        private val held: Set<String>,
-        private val pinned: String? = null,
-    ) {
-        private val waiting = HashSet<String>()
-        private var near: Map<String, LookAhead> = emptyMap()
-
-        /** The vehicles the grantee's check looked at: those whose needs its needs lead to. */
-        fun reached(): Set<String> = near.keys
-
-        fun isBlocked(ahead: LookAhead, self: String): Boolean {
-            if (self == grantee) settle(ahead)
-            return blocks(ahead, self)
-        }
-
-        private fun blocks(ahead: LookAhead, self: String): Boolean =
-            ahead.required.any { isTaken(it, self) } ||
-                (ahead.options.isNotEmpty() && ahead.options.all { option -> option.any { isTaken(it, self) } })
-
-        fun isTaken(key: String, self: String): Boolean =
-            (self != grantee && key in held) || assumed.holdersOf(key).any { it != self && it in waiting }
-
-        private fun settle(start: LookAhead) {
-            val near = LinkedHashMap<String, LookAhead>()
-            val queue = ArrayDeque<String>()
-            fun reach(ahead: LookAhead) {
-                ahead.forEachKey { key ->
-                    for (holder in assumed.holdersOf(key)) {
-                        if (holder != grantee && holder !in near) {
-                            near[holder] = lookAhead(holder)
-                            queue += holder
-                        }
-                    }
-                }
-            }
-            reach(start)
-            while (queue.isNotEmpty()) reach(near.getValue(queue.removeFirst()))
-            this.near = near
-            waiting += near.keys
-            val order = near.keys.reversed()
-            do {
-                var changed = false
-                for (client in order) {
-                    if (client in waiting && client != pinned && !blocks(near.getValue(client), client)) {
-                        waiting -= client
-                        changed = true
-                    }
-                }
-            } while (changed)
-        }
-    }
+    private fun walk(grantee: String, held: Set<String>, pinned: String? = null) =
+        ReachabilityWalk(grantee, held, pinned, assumed) { lookAhead(it) }
 
     // [client]'s look-ahead as it stands, kept until it changes (a grant looked at as if made is not kept).
     private fun lookAhead(client: String): LookAhead {

@@ -58,6 +58,10 @@ class HeldResources {
         return keptBehind(driven, coverLength, vehicleLength).flatMapTo(HashSet()) { it } - next
     }
 
+    /** As [keptAfter] for several [steps] ahead, none of them held yet: [steps]' last left out. */
+    fun keptAfter(steps: List<Set<String>>, coverLength: (Set<String>) -> Long, vehicleLength: Long): Set<String> =
+        keptBehind(sets + steps, coverLength, vehicleLength).flatMapTo(HashSet()) { it } - steps.last()
+
     // Newest first, keep passed sets until their paths cover the vehicle's length.
     private fun keptBehind(
         passed: List<Set<String>>,

@@ -168,6 +168,8 @@ class VehicleController(override val name: String, internal val env: VehicleEnvi
     override fun heldAfter(resources: Set<String>): Set<String> =
         held.keptAfter(resources, ::pathLength, lengthToCover())
 
+    override fun heldAfter(steps: List<Set<String>>): Set<String> = held.keptAfter(steps, ::pathLength, lengthToCover())
+
     fun onCommandExecuted(command: MovementCommand) {
         val done = sent.firstOrNull()
         if (done?.command != command) {

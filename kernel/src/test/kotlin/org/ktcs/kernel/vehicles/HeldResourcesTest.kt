@@ -28,4 +28,12 @@ class HeldResourcesTest : FunSpec({
         held.passed(setOf("C --- D", "D"), "D", ::cover, 1000) shouldBe setOf("A --- B", "B", "B --- C", "C")
         held.asList() shouldBe listOf(setOf("D"), setOf("C --- D", "D"))
     }
+
+    test("two steps ahead, a vehicle longer than the second step still covers the first one") {
+        val held = HeldResources().apply { reset(setOf("A")) }
+        val steps = listOf(setOf("A --- B", "B"), setOf("B --- C", "C"))
+        held.keptAfter(steps, ::cover, 1000) shouldBe setOf("A --- B", "B")
+        held.keptAfter(steps, ::cover, 500) shouldBe emptySet()
+        held.keptAfter(steps, ::cover, 0) shouldBe emptySet()
+    }
 })

@@ -1,0 +1,33 @@
+package org.ktcs.kernel.simulation
+
+import io.kotest.assertions.withClue
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.shouldBe
+import org.ktcs.kernel.config.ConfigLoader
+import org.ktcs.kernel.simulation.Lane.BACKWARD
+import org.ktcs.kernel.simulation.Lane.FORWARD
+
+/** Random plants on which the fleet once stopped for good (found by scanning `TrafficPropertyTest`'s generator). */
+class StalledRandomPlantsTest : FunSpec({
+    // A 3x3 one-way grid with a single-vehicle block: a vehicle on the block's way out waited for the block's holder,
+    // who waited for it. The watchdog sent it into the free park bay beyond the next point, but the step to the bay's
+    // mouth was judged as if it stood there for good and was refused: 4 of 8 orders finished.
+    test("a vehicle sent into a park bay is granted the bay's mouth, judged as it will stand in the bay") {
+        val lanes = listOf(
+            BACKWARD, FORWARD, BACKWARD, BACKWARD, FORWARD, BACKWARD,
+            FORWARD, FORWARD, BACKWARD, BACKWARD, FORWARD, FORWARD,
+        )
+        val plant = RandomPlant(3, 3, lanes, 4, 4, true, -3502435087536113702L).build()
+        val config = ConfigLoader().load(null, emptyMap(), emptyList())
+        val report = SimulationRunner(plant, config, listOf(stepVehicles), ORDERS, 8981339568532049663L).run()
+        withClue(report.lines().joinToString("\n")) {
+            report.ordersFinished shouldBe ORDERS
+            report.doubleAllocations shouldBe 0
+            report.sharedPositions shouldBe 0
+        }
+    }
+}) {
+    private companion object {
+        const val ORDERS = 8
+    }
+}
