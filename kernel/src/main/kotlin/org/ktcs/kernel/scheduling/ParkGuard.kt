@@ -74,12 +74,12 @@ internal class ParkGuard(
         return true
     }
 
-    /** The nearest free park point [client] can drive to now over points nobody holds, or null. */
-    fun retreatPoint(client: String): String? {
+    /** The nearest free park point [client] can drive to now over points nobody holds and not [taken], or null. */
+    fun retreatPoint(client: String, taken: (String) -> Boolean = { false }): String? {
         refresh()
         if (isOff(standings.size)) return null
         val fleet = standings.values.toList()
-        return standings[client]?.let { parks.retreatPoint(fleet, it) }
+        return standings[client]?.let { parks.retreatPoint(fleet, it, taken) }
     }
 
     // Whether the fleet with [grantee] standing as after its grant is safe; a refusal is kept with its trap.

@@ -129,9 +129,9 @@ internal class ParkSafety(model: PlantModel) {
 
     /**
      * The nearest free park point [vehicle] of [fleet] reaches from its front over points nobody holds, or null: where
-     * it can retreat to now.
+     * it can retreat to now. Park points [taken] by another vehicle's claim are passed over.
      */
-    fun retreatPoint(fleet: List<Standing>, vehicle: Standing): String? {
+    fun retreatPoint(fleet: List<Standing>, vehicle: Standing, taken: (String) -> Boolean = { false }): String? {
         val held = BooleanArray(names.size)
         for (standing in fleet) standing.points.forEach { held[it] = true }
         val seen = BooleanArray(names.size)
@@ -141,7 +141,7 @@ internal class ParkSafety(model: PlantModel) {
         while (queue.isNotEmpty()) {
             for (next in successors[queue.take()]) {
                 if (seen[next] || held[next]) continue
-                if (isPark[next]) return names[next]
+                if (isPark[next] && !taken(names[next])) return names[next]
                 seen[next] = true
                 queue.push(next)
             }

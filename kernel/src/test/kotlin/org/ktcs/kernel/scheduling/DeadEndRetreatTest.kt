@@ -44,4 +44,24 @@ class DeadEndRetreatTest : FunSpec({
         f.clock.advance(4_000)
         f.scheduler.retreats { true }.toList() shouldBe listOf(Retreat("v1", "K"))
     }
+
+    test("a vehicle retreats into no bay where another vehicle's order ends: the two would meet at its mouth") {
+        // As above, and v3 at A's far side is sent to park in K: v1 is sent to L instead, and to K once v3's park order
+        // ends elsewhere.
+        val model = plant("A-B", "B-A", "B-C", "C-B", "B-K", "K-B", "C-L", "L-C", "X-A", "A-X").let { model ->
+            model.copy(
+                points = model.points.map {
+                    if (it.name in setOf("K", "L")) it.copy(type = PointType.PARK_POSITION) else it
+                },
+            )
+        }
+        val f = SchedulerFixture(model)
+        val v1 = f.client("v1").also { f.scheduler.allocateNow(it, setOf("B")) }
+        val v3 = f.client("v3").also { f.scheduler.allocateNow(it, setOf("X")) }
+        f.scheduler.claim(v3, listOf(setOf("X-A", "A"), setOf("A-B", "B"), setOf("B-K", "K")))
+
+        f.scheduler.retreatPoint("v1") shouldBe "L"
+        f.scheduler.claim(v3, listOf(setOf("X-A", "A")))
+        f.scheduler.retreatPoint("v1") shouldBe "K"
+    }
 })

@@ -62,6 +62,7 @@ class ParkSafetyTest : FunSpec({
 
         safety.retreatPoint(listOf(va), va) shouldBe "P"
         safety.retreatPoint(listOf(va, safety.standing("vb", "b")), va) shouldBe null
+        safety.retreatPoint(listOf(va), va) { it == "P" } shouldBe null
     }
 
     test("a grant is refused while it would leave the vehicles unable to park, and allowed once it would not") {

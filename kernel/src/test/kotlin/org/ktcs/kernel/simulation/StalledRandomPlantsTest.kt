@@ -6,6 +6,8 @@ import io.kotest.matchers.shouldBe
 import org.ktcs.kernel.config.ConfigLoader
 import org.ktcs.kernel.simulation.Lane.BACKWARD
 import org.ktcs.kernel.simulation.Lane.FORWARD
+import org.ktcs.kernel.simulation.Lane.NONE
+import org.ktcs.kernel.simulation.Lane.TWO_WAY
 
 /** Random plants on which the fleet once stopped for good (found by scanning `TrafficPropertyTest`'s generator). */
 class StalledRandomPlantsTest : FunSpec({
@@ -17,17 +19,30 @@ class StalledRandomPlantsTest : FunSpec({
             BACKWARD, FORWARD, BACKWARD, BACKWARD, FORWARD, BACKWARD,
             FORWARD, FORWARD, BACKWARD, BACKWARD, FORWARD, FORWARD,
         )
-        val plant = RandomPlant(3, 3, lanes, 4, 4, true, -3502435087536113702L).build()
-        val config = ConfigLoader().load(null, emptyMap(), emptyList())
-        val report = SimulationRunner(plant, config, listOf(stepVehicles), ORDERS, 8981339568532049663L).run()
-        withClue(report.lines().joinToString("\n")) {
-            report.ordersFinished shouldBe ORDERS
-            report.doubleAllocations shouldBe 0
-            report.sharedPositions shouldBe 0
-        }
+        runs(RandomPlant(3, 3, lanes, 4, 4, true, -3502435087536113702L), 8981339568532049663L)
+    }
+
+    // A 3x4 two-way grid with both kinds of block: a vehicle sent to park in a bay met, at the bay's mouth, a vehicle
+    // the watchdog had sent into the same bay to let others pass; neither could move: 6 of 8 orders finished.
+    test("a vehicle is sent into no bay where another vehicle's order ends") {
+        val lanes = listOf(
+            TWO_WAY, TWO_WAY, NONE, TWO_WAY, TWO_WAY, TWO_WAY, TWO_WAY, NONE, TWO_WAY,
+            TWO_WAY, TWO_WAY, NONE, TWO_WAY, TWO_WAY, NONE, TWO_WAY, TWO_WAY,
+        )
+        runs(RandomPlant(3, 4, lanes, 3, 4, true, -2607860026918067736L), -4386970760727166545L)
     }
 }) {
     private companion object {
         const val ORDERS = 8
+
+        fun runs(plant: RandomPlant, orderSeed: Long) {
+            val config = ConfigLoader().load(null, emptyMap(), emptyList())
+            val report = SimulationRunner(plant.build(), config, listOf(stepVehicles), ORDERS, orderSeed).run()
+            withClue(report.lines().joinToString("\n")) {
+                report.ordersFinished shouldBe ORDERS
+                report.doubleAllocations shouldBe 0
+                report.sharedPositions shouldBe 0
+            }
+        }
     }
 }
