@@ -6,7 +6,6 @@ import org.ktcs.api.model.PlantModel
 import org.ktcs.api.scheduling.Retreat
 import org.ktcs.api.scheduling.Scheduler
 import org.ktcs.api.scheduling.SchedulerClient
-import org.ktcs.kernel.scheduling.TrafficTimers.DEAD_END_RETREAT_MILLIS
 import org.ktcs.kernel.scheduling.TrafficTimers.DEAD_HOLE_PATIENCE_MILLIS
 import org.ktcs.kernel.scheduling.TrafficTimers.HELD_BACK_REPORT_MILLIS
 import org.ktcs.kernel.scheduling.TrafficTimers.PARK_TEST_PATIENCE_MILLIS
@@ -272,27 +271,15 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     override fun retreats(eligible: (String) -> Boolean): Sequence<Retreat> {
         val now = clock.elapsedMillis()
         val heldFor = deferred.associate { it.client.name to now - (deferredSince[it.seq] ?: now) }
-        val ends by lazy { claimEnds() }
-        return heldFor.filterValues { it >= HELD_BACK_REPORT_MILLIS }.entries
-            .sortedByDescending { it.value }
-            .asSequence()
-            .map { it.key }
-            .filter(eligible)
-            .mapNotNull { client ->
-                parks.retreatPoint(client, endsOfOthers(ends, client))?.let { Retreat(client, it) }
-            }
-            .filter { !safety.isDeadEnd(it.parkPoint) || heldFor.getValue(it.vehicle) >= DEAD_END_RETREAT_MILLIS }
+        return parks.retreats(heldFor, eligible, ::claimEnds, safety::isDeadEnd)
     }
 
-    override fun retreatPoint(client: String): String? = parks.retreatPoint(client, endsOfOthers(claimEnds(), client))
+    override fun retreatPoint(client: String): String? = parks.retreatPoint(client, claimEnds())
 
     // Where each claim ends, by point: a retreat into a bay where another vehicle's order ends (a park order's, say)
     // would meet that vehicle head-on at the bay's mouth.
     private fun claimEnds(): Map<String, String> =
         claims.entries.mapNotNull { (client, route) -> route.lastOrNull()?.let(safety::pointOf)?.to(client) }.toMap()
-
-    private fun endsOfOthers(ends: Map<String, String>, client: String): (String) -> Boolean =
-        { point -> ends[point].let { it != null && it != client } }
 
     /** Retries the grants held back for longer than the park test's patience, which the local rule alone decides now. */
     override fun retryOverdue() {

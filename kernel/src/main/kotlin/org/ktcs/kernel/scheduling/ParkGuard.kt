@@ -1,5 +1,8 @@
 package org.ktcs.kernel.scheduling
 
+import org.ktcs.api.scheduling.Retreat
+import org.ktcs.kernel.scheduling.TrafficTimers.DEAD_END_RETREAT_MILLIS
+import org.ktcs.kernel.scheduling.TrafficTimers.HELD_BACK_REPORT_MILLIS
 import org.slf4j.LoggerFactory
 
 /**
@@ -74,12 +77,37 @@ internal class ParkGuard(
         return true
     }
 
-    /** The nearest free park point [client] can drive to now over points nobody holds and not [taken], or null. */
-    fun retreatPoint(client: String, taken: (String) -> Boolean = { false }): String? {
+    /**
+     * The nearest free park point [client] can drive to now over points nobody holds, or null; not one where another
+     * client's claim ends ([claimEnds]: the client by point), which would meet it head-on at the bay's mouth.
+     */
+    fun retreatPoint(client: String, claimEnds: Map<String, String> = emptyMap()): String? {
         refresh()
         if (isOff(standings.size)) return null
         val fleet = standings.values.toList()
-        return standings[client]?.let { parks.retreatPoint(fleet, it, taken) }
+        return standings[client]?.let { standing ->
+            parks.retreatPoint(fleet, standing) { point -> claimEnds[point].let { it != null && it != client } }
+        }
+    }
+
+    /**
+     * The clients held back ([heldFor]: for how long) for longer than two watchdog periods and [eligible], longest held
+     * first, that can retreat now, each to its [retreatPoint]; into a dead-end bay only after [DEAD_END_RETREAT_MILLIS].
+     */
+    fun retreats(
+        heldFor: Map<String, Long>,
+        eligible: (String) -> Boolean,
+        claimEnds: () -> Map<String, String>,
+        isDeadEnd: (String) -> Boolean,
+    ): Sequence<Retreat> {
+        val ends by lazy(claimEnds)
+        return heldFor.filterValues { it >= HELD_BACK_REPORT_MILLIS }.entries
+            .sortedByDescending { it.value }
+            .asSequence()
+            .map { it.key }
+            .filter(eligible)
+            .mapNotNull { client -> retreatPoint(client, ends)?.let { Retreat(client, it) } }
+            .filter { !isDeadEnd(it.parkPoint) || heldFor.getValue(it.vehicle) >= DEAD_END_RETREAT_MILLIS }
     }
 
     // Whether the fleet with [grantee] standing as after its grant is safe; a refusal is kept with its trap.
