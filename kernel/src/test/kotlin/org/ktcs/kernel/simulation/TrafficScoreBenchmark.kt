@@ -12,36 +12,45 @@ import org.ktcs.kernel.config.ConfigLoader
 /**
  * How far the traffic rule gets on random small plants, per kind of lane: a benchmark, run only on request
  * (`KTCS_TRAFFIC_SCORE=60 ./mvnw -B verify -pl kernel -am -Dtest=TrafficScoreBenchmark
- * -Dsurefire.failIfNoSpecifiedTests=false`, with the number of plants per kind; seed 77, 8 orders each). It prints,
- * per kind, how many plants finished every order without a deadlock report, how many had a report, and how many did
- * not finish; it fails only if a resource was held twice or two vehicles shared a point.
+ * -Dsurefire.failIfNoSpecifiedTests=false`, with the number of plants per kind and seed; seed 77, or the seeds
+ * `KTCS_TRAFFIC_SEEDS` names, e.g. `1-5`; 8 orders each). It prints, per kind, how many plants finished every order
+ * without a deadlock report, how many had a report, and how many did not finish, and each plant that did not finish
+ * (to run again with [SimulationRunner]); it fails only if a resource was held twice or two vehicles shared a point.
  */
 class TrafficScoreBenchmark : FunSpec({
     val plantsPerKind = System.getenv("KTCS_TRAFFIC_SCORE")?.toIntOrNull()
     val kinds = listOf("one-way" to oneWay, "one-way and two-way" to mixed, "two-way" to twoWay)
+    val seeds = System.getenv("KTCS_TRAFFIC_SEEDS")?.split("-")?.let { it.first().toLong()..it.last().toLong() }
+        ?: 77L..77L
 
     test("random plants per kind of lane").config(enabled = plantsPerKind != null) {
         for ((kind, lanes) in kinds) {
             var clean = 0
             var reported = 0
             var unfinished = 0
-            checkAll(
-                PropTestConfig(seed = 77, iterations = plantsPerKind!!),
-                trafficPlants(lanes),
-                Arb.int(ORDERS..ORDERS),
-                Arb.long(),
-            ) { plant, orders, orderSeed ->
-                val config = ConfigLoader().load(null, emptyMap(), emptyList())
-                val report = SimulationRunner(plant.build(), config, listOf(stepVehicles), orders, orderSeed).run()
-                val finished = report.ordersFinished + report.ordersUnroutable == orders
-                if (finished && report.deadlocksDetected == 0) clean++
-                if (report.deadlocksDetected > 0) reported++
-                if (!finished) unfinished++
-                report.doubleAllocations shouldBe 0
-                report.sharedPositions shouldBe 0
+            for (seed in seeds) {
+                checkAll(
+                    PropTestConfig(seed = seed, iterations = plantsPerKind!!),
+                    trafficPlants(lanes),
+                    Arb.int(ORDERS..ORDERS),
+                    Arb.long(),
+                ) { plant, orders, orderSeed ->
+                    val config = ConfigLoader().load(null, emptyMap(), emptyList())
+                    val report = SimulationRunner(plant.build(), config, listOf(stepVehicles), orders, orderSeed).run()
+                    val finished = report.ordersFinished + report.ordersUnroutable == orders
+                    if (finished && report.deadlocksDetected == 0) clean++
+                    if (report.deadlocksDetected > 0) reported++
+                    if (!finished) {
+                        unfinished++
+                        println("traffic score: did not finish: $plant, orders seed $orderSeed")
+                    }
+                    report.doubleAllocations shouldBe 0
+                    report.sharedPositions shouldBe 0
+                }
             }
+            val plants = plantsPerKind!! * (seeds.last - seeds.first + 1)
             println(
-                "traffic score, $kind lanes: $clean of $plantsPerKind plants finished without a deadlock report; " +
+                "traffic score, $kind lanes: $clean of $plants plants finished without a deadlock report; " +
                     "$reported with a report, $unfinished did not finish",
             )
         }
