@@ -23,14 +23,7 @@ class DeadEndRetreatTest : FunSpec({
     test("a vehicle held back head-on retreats into the dead-end bay beside it after six seconds, not after two") {
         // The two-way track A - B - C with dead-end park bays K (at B) and L (at C). v1 at A and v2 at C are headed
         // for each other's points: v1's step onto B is held back for good.
-        val model = plant("A-B", "B-A", "B-C", "C-B", "B-K", "K-B", "C-L", "L-C").let { model ->
-            model.copy(
-                points = model.points.map {
-                    if (it.name in setOf("K", "L")) it.copy(type = PointType.PARK_POSITION) else it
-                },
-            )
-        }
-        val f = SchedulerFixture(model)
+        val f = SchedulerFixture(withBays("A-B", "B-A", "B-C", "C-B", "B-K", "K-B", "C-L", "L-C"))
         val v1 = f.client("v1").also { f.scheduler.allocateNow(it, setOf("A")) }
         val v2 = f.client("v2").also { f.scheduler.allocateNow(it, setOf("C")) }
         f.scheduler.claim(v1, listOf(setOf("A-B", "B"), setOf("B-C", "C")))
@@ -48,14 +41,7 @@ class DeadEndRetreatTest : FunSpec({
     test("a vehicle retreats into no bay where another vehicle's order ends: the two would meet at its mouth") {
         // As above, and v3 at A's far side is sent to park in K: v1 is sent to L instead, and to K once v3's park order
         // ends elsewhere.
-        val model = plant("A-B", "B-A", "B-C", "C-B", "B-K", "K-B", "C-L", "L-C", "X-A", "A-X").let { model ->
-            model.copy(
-                points = model.points.map {
-                    if (it.name in setOf("K", "L")) it.copy(type = PointType.PARK_POSITION) else it
-                },
-            )
-        }
-        val f = SchedulerFixture(model)
+        val f = SchedulerFixture(withBays("A-B", "B-A", "B-C", "C-B", "B-K", "K-B", "C-L", "L-C", "X-A", "A-X"))
         val v1 = f.client("v1").also { f.scheduler.allocateNow(it, setOf("B")) }
         val v3 = f.client("v3").also { f.scheduler.allocateNow(it, setOf("X")) }
         f.scheduler.claim(v3, listOf(setOf("X-A", "A"), setOf("A-B", "B"), setOf("B-K", "K")))
@@ -65,3 +51,12 @@ class DeadEndRetreatTest : FunSpec({
         f.scheduler.retreatPoint("v1") shouldBe "K"
     }
 })
+
+// The plant of [paths] with its points K and L as park positions.
+private fun withBays(vararg paths: String) = plant(*paths).let { model ->
+    model.copy(
+        points = model.points.map {
+            if (it.name in setOf("K", "L")) it.copy(type = PointType.PARK_POSITION) else it
+        },
+    )
+}
