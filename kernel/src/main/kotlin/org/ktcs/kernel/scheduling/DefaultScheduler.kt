@@ -300,6 +300,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     // yet), as deadlock avoidance counts it.
     private fun keysBehind(client: SchedulerClient, resources: Set<String>): Set<String> =
         blocks.keysOf(client.heldAfter(resources))
+
     private fun keysBehind(client: SchedulerClient, steps: List<Set<String>>): Set<String> =
         blocks.keysOf(client.heldAfter(steps))
 

@@ -38,6 +38,12 @@ class DeadEndRetreatTest : FunSpec({
         f.scheduler.retreats { true }.toList() shouldBe listOf(Retreat("v1", "K"))
     }
 
+    test("a client that does not say how long it is counts, two steps ahead, the first step as still covered") {
+        val client = RecordingClient("v")
+
+        client.heldAfter(listOf(setOf("A-B", "B"), setOf("B-K", "K"))) shouldBe setOf("A-B", "B")
+    }
+
     test("a vehicle retreats into no bay where another vehicle's order ends: the two would meet at its mouth") {
         // As above, and v3 at A's far side is sent to park in K: v1 is sent to L instead, and to K once v3's park order
         // ends elsewhere.
