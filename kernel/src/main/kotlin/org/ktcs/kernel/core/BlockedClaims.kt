@@ -1,5 +1,6 @@
 package org.ktcs.kernel.core
 
+import org.ktcs.kernel.scheduling.DefaultScheduler
 import org.slf4j.LoggerFactory
 
 /**
@@ -9,7 +10,8 @@ import org.slf4j.LoggerFactory
  * at the watchdog's next check one of its vehicles yields, before their wait counts as a deadlock (a grant held back
  * counts after two periods): the ones in the claimant's way first, each through a free park bay in reach or a free
  * point nearby, then the claimant ([Retreats.breakCycle]; each yield also counts as a retreat). A knot that no yield
- * breaks within [MAX_TRIES] checks is left to the deadlock search, which reports it.
+ * breaks within [MAX_TRIES] checks is left to the deadlock search, which reports it. Two standing vehicles whose next
+ * steps the local rule holds back for each other get the same treatment, through park bays only.
  */
 internal class BlockedClaims(private val kernel: KernelCore, private val state: KernelState) {
     private val log = LoggerFactory.getLogger(BlockedClaims::class.java)
@@ -20,6 +22,7 @@ internal class BlockedClaims(private val kernel: KernelCore, private val state: 
         private set
 
     fun check(retreating: Retreats) {
+        mutualRefusals(retreating)
         val blocked = state.controllers.all().filter { it.claimBlocked }
         if (blocked.isEmpty()) {
             if (tries.isNotEmpty()) tries.clear()
@@ -50,6 +53,22 @@ internal class BlockedClaims(private val kernel: KernelCore, private val state: 
             val tried = (tries[claimant.name] ?: 0) + 1
             tries[claimant.name] = tried
             if (tried >= MAX_TRIES) claimant.claimBlocked = false
+        }
+    }
+
+    // Standing vehicles whose next steps the local rule holds back for each other: no grant can undo that either, so
+    // one of them retreats through a free park bay at once, without side steps (those moved vehicles into worse
+    // knots on the random plants), before the wait counts as a deadlock (developer's guide, 12, "Session 32").
+    private fun mutualRefusals(retreating: Retreats) {
+        val scheduler = kernel.scheduler as? DefaultScheduler ?: return
+        for (claimant in state.controllers.all()) {
+            if (claimant.sent.isNotEmpty() || claimant.currentOrder == null) continue
+            val others = scheduler.refusedMutually(claimant.name)
+            if (others.isEmpty()) continue
+            if (retreating.breakCycle(others.sorted() + claimant.name, sideSteps = false)) {
+                yields++
+                log.info("traffic: vehicles {} and {} hold each other back; one of them yields", claimant.name, others)
+            }
         }
     }
 

@@ -35,15 +35,11 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     private var deliveries = Deliveries(clock)
     private var safety = newSafety(model)
     private var parks = newParkGuard(model)
-    private val deferred = TreeSet(compareBy(Request::seq))
-    private val deferredSince = HashMap<Long, Long>()
+    private val held = HeldBackRequests()
     private val claims = LinkedHashMap<String, List<Set<String>>>()
     private val lastGrants = HashMap<String, Request>()
     private val paused = HashSet<String>()
 
-    // Per request the park test refused, how many releases there had been: only a release can make it safe.
-    private val parkRefusedAt = HashMap<Long, Long>()
-    private val refusedBy = HashMap<Long, GrantWait>()
     private var releases = 0L
     private var nextSeq = 0L
 
@@ -66,10 +62,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         deliveries = Deliveries(clock)
         safety = newSafety(model)
         parks = newParkGuard(model)
-        deferred.clear()
-        deferredSince.clear()
-        parkRefusedAt.clear()
-        refusedBy.clear()
+        held.clear()
         lastGrants.clear()
         claims.clear()
         paused.clear()
@@ -161,7 +154,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     override fun pendingAllocations(): Map<String, List<Set<String>>> = pending.snapshot()
 
     /** The clients whose next grant deadlock avoidance holds back now (until something is freed that makes it safe). */
-    fun heldBackClients(): Set<String> = deferred.mapTo(HashSet()) { it.client.name }
+    fun heldBackClients(): Set<String> = held.all.mapTo(HashSet()) { it.client.name }
 
     /** The direction in which the users of each SAME_DIRECTION_ONLY block entered it, where known, by block name. */
     fun blockDirections(): Map<String, String> = occupancy.directions.directions()
@@ -181,7 +174,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         return when {
             client in paused -> GrantWait.PAUSED to emptySet()
             !occupancy.mayTake(client, request) -> GrantWait.OCCUPIED to occupancy.blockersOf(client, request).keys
-            request in deferred -> (refusedBy[request.seq] ?: GrantWait.LOCAL_RULE) to emptySet()
+            request in held -> (held.reason(request) ?: GrantWait.LOCAL_RULE) to emptySet()
             else -> GrantWait.NONE_PENDING to emptySet()
         }
     }
@@ -207,8 +200,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     // those wait for it in turn (vehicles meeting head-on on a two-way stretch), the watchdog sees a deadlock and
     // routes one of them around it, instead of both waiting for good.
     private fun heldBackBy(request: Request): Map<String, Set<String>> {
-        val since = deferredSince[request.seq] ?: return emptyMap()
-        if (clock.elapsedMillis() - since < HELD_BACK_REPORT_MILLIS || request !in deferred) return emptyMap()
+        val since = held.since(request) ?: return emptyMap()
+        if (clock.elapsedMillis() - since < HELD_BACK_REPORT_MILLIS || request !in held) return emptyMap()
         return safety.blockersAfter(request.client.name, request.keys, keysBehind(request.client, request.resources))
     }
 
@@ -238,6 +231,17 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     override fun claimIsBlocked(client: SchedulerClient): Boolean = safety.waitsForItself(client.name)
 
     override fun claimBlockers(client: SchedulerClient): Set<String> = safety.selfBlockers(client.name)
+
+    /** The clients whose next request the local rule holds back for [client], whose own it holds back for them. */
+    fun refusedMutually(client: String): Set<String> =
+        localRuleBlockers(client).filterTo(HashSet()) { client in localRuleBlockers(it) }
+
+    private fun localRuleBlockers(client: String): Set<String> {
+        val request = pending.head(client)?.takeIf { it in held && held.reason(it) == GrantWait.LOCAL_RULE }
+        return request?.let {
+            safety.blockersAfter(client, it.keys, keysBehind(it.client, it.resources)).keys
+        }.orEmpty()
+    }
 
     /**
      * Whether [claimIsBlocked] would hold for [client] if it claimed [resources], or deadlock avoidance would hold back
@@ -270,7 +274,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
      */
     override fun retreats(eligible: (String) -> Boolean): Sequence<Retreat> {
         val now = clock.elapsedMillis()
-        val heldFor = deferred.associate { it.client.name to now - (deferredSince[it.seq] ?: now) }
+        val heldFor = held.all.associate { it.client.name to now - (held.since(it) ?: now) }
         return parks.retreats(heldFor, eligible, ::claimEnds, safety::isDeadEnd)
     }
 
@@ -284,7 +288,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     /** Retries the grants held back for longer than the park test's patience, which the local rule alone decides now. */
     override fun retryOverdue() {
         val now = clock.elapsedMillis()
-        if (deferred.any { now - (deferredSince[it.seq] ?: now) >= PARK_TEST_PATIENCE_MILLIS }) retryDeferred()
+        if (held.all.any { now - (held.since(it) ?: now) >= PARK_TEST_PATIENCE_MILLIS }) retryDeferred()
     }
 
     private fun newCorridorSteps() = CorridorSteps(corridors, occupancy.corridorDirections) { claims[it] }
@@ -306,13 +310,9 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
 
     // Grants held back for safety may become safe after any change elsewhere; each retry costs one reachability walk.
     private fun retryDeferred() {
-        if (deferred.isEmpty()) return
-        val retry = deferred.toList()
-        deferred.clear()
-        process(retry)
-        if (deferredSince.size > deferred.size) deferredSince.keys.retainAll(deferred.mapTo(HashSet()) { it.seq })
-        if (parkRefusedAt.size > deferred.size) parkRefusedAt.keys.retainAll(deferred.mapTo(HashSet()) { it.seq })
-        if (refusedBy.size > deferred.size) refusedBy.keys.retainAll(deferred.mapTo(HashSet()) { it.seq })
+        if (held.isEmpty()) return
+        process(held.takeAll())
+        held.forgetSettled()
     }
 
     private fun newRequest(client: SchedulerClient, resources: Set<String>): Request =
@@ -337,14 +337,10 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
                 else -> null
             }
             if (refusal != null) {
-                refusedBy[request.seq] = refusal
-                deferred += request
-                deferredSince.putIfAbsent(request.seq, clock.elapsedMillis())
+                held.holdBack(request, refusal, clock.elapsedMillis())
                 continue
             }
-            deferredSince.remove(request.seq)
-            parkRefusedAt.remove(request.seq)
-            refusedBy.remove(request.seq)
+            held.granted(request)
             pending.pop(request.client.name)?.let(queue::add)
             queue += pending.waitingFor(grant(request))
         }
@@ -356,7 +352,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         }
 
     private fun leavesDeadHole(request: Request, behind: Set<String>): Boolean {
-        val since = deferredSince[request.seq]
+        val since = held.since(request)
         if (since != null && clock.elapsedMillis() - since >= DEAD_HOLE_PATIENCE_MILLIS) return false
         return safety.leavesDeadHole(request.client.name, request.keys, behind)
     }
@@ -370,14 +366,14 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     // The park test is a preference, not a wall: a grant it has held back for PARK_TEST_PATIENCE_MILLIS is left to the
     // local rule alone (whose holds the watchdog sees), so a plant the test judges too pessimistically never freezes.
     private fun parkSafe(request: Request, behind: Set<String>): Boolean {
-        val since = deferredSince[request.seq]
+        val since = held.since(request)
         if (since != null && clock.elapsedMillis() - since >= PARK_TEST_PATIENCE_MILLIS) {
-            if (refusedBy[request.seq] == GrantWait.PARK_TEST) grantsAfterPatience++
+            if (held.reason(request) == GrantWait.PARK_TEST) grantsAfterPatience++
             return true
         }
-        if (parkRefusedAt[request.seq] == releases) return false
+        if (held.parkRefusedAt[request.seq] == releases) return false
         if (parks.mayGrant(request.client.name, safety.pointOf(request.resources), request.keys + behind)) return true
-        parkRefusedAt[request.seq] = releases
+        held.parkRefusedAt[request.seq] = releases
         return false
     }
 

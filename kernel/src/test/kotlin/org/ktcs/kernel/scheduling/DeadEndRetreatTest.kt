@@ -38,6 +38,21 @@ class DeadEndRetreatTest : FunSpec({
         f.scheduler.retreats { true }.toList() shouldBe listOf(Retreat("v1", "K"))
     }
 
+    test("two vehicles head-on whose next steps the local rule holds back for each other are found as such") {
+        val f = SchedulerFixture(withBays("A-B", "B-A", "B-C", "C-B", "B-K", "K-B", "C-L", "L-C"))
+        val v1 = f.client("v1").also { f.scheduler.allocateNow(it, setOf("A")) }
+        val v2 = f.client("v2").also { f.scheduler.allocateNow(it, setOf("C")) }
+        f.scheduler.claim(v1, listOf(setOf("A-B", "B"), setOf("B-C", "C")))
+        f.scheduler.claim(v2, listOf(setOf("C-B", "B"), setOf("B-A", "A")))
+        f.allocate(v1, "A-B", "B")
+        f.scheduler.refusedMutually("v1") shouldBe emptySet()
+
+        f.allocate(v2, "C-B", "B")
+        v2.granted.shouldBeEmpty()
+        f.scheduler.refusedMutually("v1") shouldBe setOf("v2")
+        f.scheduler.refusedMutually("v2") shouldBe setOf("v1")
+    }
+
     test("a client that does not say how long it is counts, two steps ahead, the first step as still covered") {
         val client = RecordingClient("v")
 
