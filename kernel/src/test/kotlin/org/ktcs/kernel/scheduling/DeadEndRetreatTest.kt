@@ -23,12 +23,7 @@ class DeadEndRetreatTest : FunSpec({
     test("a vehicle held back head-on retreats into the dead-end bay beside it after six seconds, not after two") {
         // The two-way track A - B - C with dead-end park bays K (at B) and L (at C). v1 at A and v2 at C are headed
         // for each other's points: v1's step onto B is held back for good.
-        val f = SchedulerFixture(withBays("A-B", "B-A", "B-C", "C-B", "B-K", "K-B", "C-L", "L-C"))
-        val v1 = f.client("v1").also { f.scheduler.allocateNow(it, setOf("A")) }
-        val v2 = f.client("v2").also { f.scheduler.allocateNow(it, setOf("C")) }
-        f.scheduler.claim(v1, listOf(setOf("A-B", "B"), setOf("B-C", "C")))
-        f.scheduler.claim(v2, listOf(setOf("C-B", "B"), setOf("B-A", "A")))
-        f.allocate(v1, "A-B", "B")
+        val (f, v1, _) = headOn()
         v1.granted.shouldBeEmpty()
 
         f.clock.advance(2_000)
@@ -39,12 +34,7 @@ class DeadEndRetreatTest : FunSpec({
     }
 
     test("two vehicles head-on whose next steps the local rule holds back for each other are found as such") {
-        val f = SchedulerFixture(withBays("A-B", "B-A", "B-C", "C-B", "B-K", "K-B", "C-L", "L-C"))
-        val v1 = f.client("v1").also { f.scheduler.allocateNow(it, setOf("A")) }
-        val v2 = f.client("v2").also { f.scheduler.allocateNow(it, setOf("C")) }
-        f.scheduler.claim(v1, listOf(setOf("A-B", "B"), setOf("B-C", "C")))
-        f.scheduler.claim(v2, listOf(setOf("C-B", "B"), setOf("B-A", "A")))
-        f.allocate(v1, "A-B", "B")
+        val (f, _, v2) = headOn()
         f.scheduler.refusedMutually("v1") shouldBe emptySet()
 
         f.allocate(v2, "C-B", "B")
@@ -80,4 +70,16 @@ private fun withBays(vararg paths: String) = plant(*paths).let { model ->
             if (it.name in setOf("K", "L")) it.copy(type = PointType.PARK_POSITION) else it
         },
     )
+}
+
+// The two-way track A - B - C with dead-end park bays K (at B) and L (at C); v1 at A and v2 at C, each claiming the
+// way to the other's point, and v1 asking for B.
+private fun headOn(): Triple<SchedulerFixture, RecordingClient, RecordingClient> {
+    val f = SchedulerFixture(withBays("A-B", "B-A", "B-C", "C-B", "B-K", "K-B", "C-L", "L-C"))
+    val v1 = f.client("v1").also { f.scheduler.allocateNow(it, setOf("A")) }
+    val v2 = f.client("v2").also { f.scheduler.allocateNow(it, setOf("C")) }
+    f.scheduler.claim(v1, listOf(setOf("A-B", "B"), setOf("B-C", "C")))
+    f.scheduler.claim(v2, listOf(setOf("C-B", "B"), setOf("B-A", "A")))
+    f.allocate(v1, "A-B", "B")
+    return Triple(f, v1, v2)
 }
