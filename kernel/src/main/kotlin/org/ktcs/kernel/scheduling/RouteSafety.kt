@@ -147,8 +147,9 @@ internal class RouteSafety(
         val index = claimedStep(client, keys).takeIf { it >= 0 } ?: return false
         val bay = route.getOrNull(index + 1)?.takeIf { it.intoDeadEnd && route.getOrNull(index + 2)?.twoWay != false }
         val stop = bay?.stop ?: return false
-        bay.physical.flatMapTo(witnesses) { holders(it) }
-        if (bay.physical.any { key -> holders(key).any { it != client } }) return false
+        val occupants = bay.physical.flatMapTo(HashSet()) { holders(it) }
+        witnesses += occupants
+        if (occupants.any { it != client }) return false
         val walk = walk(client, keysHeldAfter(bay.keys, behindInBay(bay.physical)))
         return !walk.isBlocked(LookAhead(stop.required, stop.options), client).also { witnesses += walk.reached() }
     }

@@ -20,8 +20,11 @@ import org.ktcs.kernel.config.ConfigLoader
 class TrafficScoreBenchmark : FunSpec({
     val plantsPerKind = System.getenv("KTCS_TRAFFIC_SCORE")?.toIntOrNull()
     val kinds = listOf("one-way" to oneWay, "one-way and two-way" to mixed, "two-way" to twoWay)
-    val seeds = System.getenv("KTCS_TRAFFIC_SEEDS")?.split("-")?.let { it.first().toLong()..it.last().toLong() }
-        ?: 77L..77L
+    val seeds = System.getenv("KTCS_TRAFFIC_SEEDS")?.let { text ->
+        val bounds = Regex("""(-?\d+)(?:-(-?\d+))?""").matchEntire(text.trim())
+            ?: error("KTCS_TRAFFIC_SEEDS must be a seed or a range such as 1-5, not '$text'")
+        bounds.groupValues[1].toLong()..(bounds.groupValues[2].ifEmpty { bounds.groupValues[1] }).toLong()
+    } ?: 77L..77L
 
     test("random plants per kind of lane").config(enabled = plantsPerKind != null) {
         for ((kind, lanes) in kinds) {
