@@ -40,7 +40,7 @@ internal class BlockedClaims(private val kernel: KernelCore, private val state: 
             val inTheWay = allocations.filter { (vehicle, held) ->
                 vehicle != claimant.name && held.any(keys::contains)
             }
-            if (retreating.breakCycle(inTheWay.keys.sorted() + claimant.name)) {
+            if (yieldsNearestFirst(claimant.name, inTheWay.keys, retreating)) {
                 yields++
                 claimant.claimBlocked = false
                 log.info(
@@ -54,6 +54,16 @@ internal class BlockedClaims(private val kernel: KernelCore, private val state: 
             tries[claimant.name] = tried
             if (tried >= MAX_TRIES) claimant.claimBlocked = false
         }
+    }
+
+    // The vehicles waiting for what the claimant stands on yield first, by a retreat or a side step (a vehicle queued
+    // at a station stub's mouth for the station the claimant is leaving, on the side its route leaves by): a retreat
+    // of a vehicle further along the queue, tried first when all went by name, left that knot as it was.
+    private fun yieldsNearestFirst(claimant: String, inTheWay: Set<String>, retreating: Retreats): Boolean {
+        val waits = kernel.scheduler.waitsFor()
+        val nearest = inTheWay.filter { waits[it]?.containsKey(claimant) == true }.sorted()
+        val knot = inTheWay.sorted() + claimant
+        return (nearest.isNotEmpty() && retreating.breakCycle(nearest, knot = knot)) || retreating.breakCycle(knot)
     }
 
     // Standing vehicles whose next steps the local rule holds back for each other: no grant can undo that either, so

@@ -40,12 +40,12 @@ internal class Retreats(private val kernel: KernelCore) {
 
     /**
      * Sends one vehicle of a deadlock that no reroute breaks on through a free park point it reaches now, else through
-     * a free point nearby that the others of the deadlock do not need ([SideSteps]).
+     * a free point nearby that the others of the [knot] do not need ([SideSteps]).
      */
-    fun breakCycle(vehicles: List<String>, sideSteps: Boolean = true): Boolean {
+    fun breakCycle(vehicles: List<String>, sideSteps: Boolean = true, knot: List<String> = vehicles): Boolean {
         val allocations = kernel.scheduler.allocations()
         return vehicles.any { vehicle -> retreatOf(vehicle, allocations) } ||
-            (sideSteps && vehicles.any { stepAside(it, vehicles, allocations) })
+            (sideSteps && vehicles.any { stepAside(it, knot, allocations) })
     }
 
     // A retreat through a bay the vehicle went through lately for a deadlock is not offered again: where it did not
