@@ -202,6 +202,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     private fun heldBackBy(request: Request): Map<String, Set<String>> {
         val since = held.since(request) ?: return emptyMap()
         if (clock.elapsedMillis() - since < HELD_BACK_REPORT_MILLIS || request !in held) return emptyMap()
+        if (held.reason(request) == GrantWait.STATION_TAKEN) stationTaken(request)?.let { return it }
         return safety.blockersAfter(request.client.name, request.keys, keysBehind(request.client, request.resources))
     }
 
@@ -331,6 +332,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
             if (!pending.isHead(request) || !isGrantable(request)) continue
             val behind = keysBehind(request.client, request.resources)
             val refusal = when {
+                stationTaken(request) != null -> GrantWait.STATION_TAKEN
                 !mayGrant(request, behind) -> GrantWait.LOCAL_RULE
                 leavesDeadHole(request, behind) -> GrantWait.LOCAL_RULE
                 !parkSafe(request, behind) -> GrantWait.PARK_TEST
@@ -350,6 +352,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         safety.mayGrant(request.client.name, request.keys, behind) {
             keysBehind(request.client, listOf(request.resources, it))
         }
+
+    private fun stationTaken(request: Request) = occupancy.standingInStationAhead(request, safety)
 
     private fun leavesDeadHole(request: Request, behind: Set<String>): Boolean {
         val since = held.since(request)

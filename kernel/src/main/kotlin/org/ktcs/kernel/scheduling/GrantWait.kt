@@ -14,6 +14,12 @@ enum class GrantWait(val label: String) {
     /** The resources are free, but the grant would close a cycle of waiting vehicles (the local rule). */
     LOCAL_RULE("local_rule"),
 
+    /**
+     * It would come into a two-way corridor towards a dead-end station stub beside it that another vehicle stands in:
+     * it waits outside until the stub is free, since that vehicle may have to leave the way it would come.
+     */
+    STATION_TAKEN("station_taken"),
+
     /** The resources are free and the local rule allows it, but the park test refused it (within its patience). */
     PARK_TEST("park_test"),
 }

@@ -300,6 +300,24 @@ internal class RouteSafety(
         }
     }
 
+    /**
+     * The dead-end stop (a station stub) [client]'s claim comes to right after the step with [keys], with every step
+     * between them inside [corridor] (its member points and paths); null if its next stop is elsewhere or that step
+     * itself ends at a stop.
+     */
+    fun deadEndStopInside(client: String, keys: Set<String>, corridor: Set<String>): String? {
+        val route = routes[client] ?: return null
+        val from = claimedStep(client, keys).takeIf { it >= 0 } ?: return null
+        // A step into a stop of its own (an operation there first) is judged when the vehicle comes back out.
+        if (route[from].stop != null) return null
+        for (index in from + 1 until route.size) {
+            val step = route[index]
+            if (step.stop != null) return if (step.intoDeadEnd) pointOf(step.physical) else null
+            if (step.physical.none(corridor::contains)) return null
+        }
+        return null
+    }
+
     /** What [client] needs next as deadlock avoidance sees it, for diagnostics. */
     fun needs(client: String): Set<String> {
         val needs = HashSet<String>()

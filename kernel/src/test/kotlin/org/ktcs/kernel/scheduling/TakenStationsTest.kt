@@ -1,0 +1,73 @@
+package org.ktcs.kernel.scheduling
+
+import io.kotest.core.spec.style.FunSpec
+import io.kotest.matchers.collections.shouldBeEmpty
+import io.kotest.matchers.collections.shouldContainExactly
+import io.kotest.matchers.maps.shouldContainExactly
+import io.kotest.matchers.shouldBe
+import io.kotest.matchers.shouldNotBe
+
+// The two-way corridor W = A = B = C = E (inner points A, B, C) with a station stub S beside B, entered at E from Q;
+// a second stub T beside C.
+private val stubbedCorridor = plant(
+    "X-W", "W-Y", "W-A", "A-W", "A-B", "B-A", "B-C", "C-B", "C-E", "E-C", "E-Z", "Q-E", "B-S", "S-B", "C-T", "T-C",
+)
+
+/** A vehicle bound for a station stub another vehicle stands in waits outside the corridor ([GrantWait.STATION_TAKEN]). */
+class TakenStationsTest : FunSpec({
+    test("a vehicle bound for a stub another vehicle stands in is not let into the corridor until the stub is free") {
+        val f = SchedulerFixture(stubbedCorridor)
+        val (inStub, newcomer) = f.client("inStub") to f.client("newcomer")
+        // inStub stands in S without a route (it operates there); newcomer comes in at E, stops in S, turns back.
+        f.scheduler.allocateNow(inStub, setOf("S"))
+        f.scheduler.allocateNow(newcomer, setOf("Q"))
+        f.scheduler.claim(newcomer, steps("Q-E", "E-C", "C-B", "B-S", "S-B", "B-C"))
+
+        f.allocate(newcomer, "Q-E", "E")
+
+        newcomer.granted.shouldBeEmpty()
+        f.scheduler.grantWaitOf("newcomer").first shouldBe GrantWait.STATION_TAKEN
+        // Past the report delay the wait is one the watchdog sees: for the vehicle in the stub, by the stub.
+        f.clock.advance(TrafficTimers.HELD_BACK_REPORT_MILLIS)
+        f.scheduler.waitsFor()["newcomer"].orEmpty() shouldContainExactly mapOf("inStub" to setOf("S"))
+
+        // inStub leaves towards W; once S is free, newcomer comes in.
+        f.scheduler.claim(inStub, steps("S-B", "B-A", "A-W"))
+        f.allocate(inStub, "S-B", "B")
+        f.free(inStub, "S")
+        newcomer.granted shouldContainExactly listOf(setOf("Q-E", "E"))
+    }
+
+    test("a vehicle bound for a free stub, or passing a taken one, comes in as before") {
+        val f = SchedulerFixture(stubbedCorridor)
+        val (inStub, toT, through) = Triple(f.client("inStub"), f.client("toT"), f.client("through"))
+        f.scheduler.allocateNow(inStub, setOf("S"))
+        f.scheduler.allocateNow(toT, setOf("Q"))
+        f.scheduler.claim(toT, steps("Q-E", "E-C", "C-T", "T-C", "C-E", "E-Z"))
+
+        f.allocate(toT, "Q-E", "E")
+        toT.granted shouldContainExactly listOf(setOf("Q-E", "E"))
+
+        f.scheduler.freeAll(toT)
+        f.scheduler.allocateNow(through, setOf("Q"))
+        f.scheduler.claim(through, steps("Q-E", "E-C", "C-B", "B-A", "A-W", "W-Y"))
+        f.allocate(through, "Q-E", "E")
+        through.granted shouldContainExactly listOf(setOf("Q-E", "E"))
+    }
+
+    test("a vehicle in a stub beside the corridor is not held back by it, even bound for another taken stub") {
+        val f = SchedulerFixture(stubbedCorridor)
+        val (inS, inT) = f.client("inS") to f.client("inT")
+        f.scheduler.allocateNow(inS, setOf("S"))
+        f.scheduler.allocateNow(inT, setOf("T"))
+        // inT, beside the corridor already, is bound for S: the rule is for vehicles outside the corridor.
+        f.scheduler.claim(inT, steps("T-C", "C-B", "B-S", "S-B", "B-A", "A-W"))
+
+        f.allocate(inT, "T-C", "C")
+
+        f.scheduler.grantWaitOf("inT").first shouldNotBe GrantWait.STATION_TAKEN
+    }
+})
+
+// Steps of the paths named `SOURCE-DESTINATION`, each with the point it ends at.
+private fun steps(vararg paths: String): List<Set<String>> = paths.map { setOf(it, it.substringAfter("-")) }
