@@ -16,12 +16,10 @@ private val stubbedCorridor = plant(
 /** A vehicle bound for a station stub another vehicle stands in waits outside the corridor ([GrantWait.STATION_TAKEN]). */
 class TakenStationsTest : FunSpec({
     test("a vehicle bound for a stub another vehicle stands in is not let into the corridor until the stub is free") {
-        val f = SchedulerFixture(stubbedCorridor)
-        val (inStub, newcomer) = f.client("inStub") to f.client("newcomer")
-        // inStub stands in S without a route (it operates there); newcomer comes in at E, stops in S, turns back.
-        f.scheduler.allocateNow(inStub, setOf("S"))
-        f.scheduler.allocateNow(newcomer, setOf("Q"))
-        f.scheduler.claim(newcomer, steps("Q-E", "E-C", "C-B", "B-S", "S-B", "B-C"))
+        val (f, inStub) = stubTaken()
+        val newcomer = f.client("newcomer")
+        // newcomer comes in at E, stops in S, turns back.
+        f.place(newcomer, "Q", "Q-E", "E-C", "C-B", "B-S", "S-B", "B-C")
 
         f.allocate(newcomer, "Q-E", "E")
 
@@ -32,36 +30,31 @@ class TakenStationsTest : FunSpec({
         f.scheduler.waitsFor()["newcomer"].orEmpty() shouldContainExactly mapOf("inStub" to setOf("S"))
 
         // inStub leaves towards W; once S is free, newcomer comes in.
-        f.scheduler.claim(inStub, steps("S-B", "B-A", "A-W"))
+        f.scheduler.claim(inStub, listOf(setOf("S-B", "B"), setOf("B-A", "A"), setOf("A-W", "W")))
         f.allocate(inStub, "S-B", "B")
         f.free(inStub, "S")
         newcomer.granted shouldContainExactly listOf(setOf("Q-E", "E"))
     }
 
     test("a vehicle bound for a free stub, or passing a taken one, comes in as before") {
-        val f = SchedulerFixture(stubbedCorridor)
-        val (inStub, toT, through) = Triple(f.client("inStub"), f.client("toT"), f.client("through"))
-        f.scheduler.allocateNow(inStub, setOf("S"))
-        f.scheduler.allocateNow(toT, setOf("Q"))
-        f.scheduler.claim(toT, steps("Q-E", "E-C", "C-T", "T-C", "C-E", "E-Z"))
+        val (f, _) = stubTaken()
+        val (toT, through) = f.client("toT") to f.client("through")
+        f.place(toT, "Q", "Q-E", "E-C", "C-T", "T-C", "C-E", "E-Z")
 
         f.allocate(toT, "Q-E", "E")
         toT.granted shouldContainExactly listOf(setOf("Q-E", "E"))
 
         f.scheduler.freeAll(toT)
-        f.scheduler.allocateNow(through, setOf("Q"))
-        f.scheduler.claim(through, steps("Q-E", "E-C", "C-B", "B-A", "A-W", "W-Y"))
+        f.place(through, "Q", "Q-E", "E-C", "C-B", "B-A", "A-W", "W-Y")
         f.allocate(through, "Q-E", "E")
         through.granted shouldContainExactly listOf(setOf("Q-E", "E"))
     }
 
     test("a vehicle in a stub beside the corridor is not held back by it, even bound for another taken stub") {
-        val f = SchedulerFixture(stubbedCorridor)
-        val (inS, inT) = f.client("inS") to f.client("inT")
-        f.scheduler.allocateNow(inS, setOf("S"))
-        f.scheduler.allocateNow(inT, setOf("T"))
+        val (f, _) = stubTaken()
+        val inT = f.client("inT")
         // inT, beside the corridor already, is bound for S: the rule is for vehicles outside the corridor.
-        f.scheduler.claim(inT, steps("T-C", "C-B", "B-S", "S-B", "B-A", "A-W"))
+        f.place(inT, "T", "T-C", "C-B", "B-S", "S-B", "B-A", "A-W")
 
         f.allocate(inT, "T-C", "C")
 
@@ -69,5 +62,16 @@ class TakenStationsTest : FunSpec({
     }
 })
 
-// Steps of the paths named `SOURCE-DESTINATION`, each with the point it ends at.
-private fun steps(vararg paths: String): List<Set<String>> = paths.map { setOf(it, it.substringAfter("-")) }
+// The corridor with a vehicle standing in S without a route (it operates there).
+private fun stubTaken(): Pair<SchedulerFixture, RecordingClient> {
+    val f = SchedulerFixture(stubbedCorridor)
+    val inStub = f.client("inStub")
+    f.scheduler.allocateNow(inStub, setOf("S"))
+    return f to inStub
+}
+
+// Places [client] at [point] and has it claim a route of the paths named `SOURCE-DESTINATION` in [paths].
+private fun SchedulerFixture.place(client: RecordingClient, point: String, vararg paths: String) {
+    scheduler.allocateNow(client, setOf(point))
+    scheduler.claim(client, paths.map { setOf(it, it.substringAfter("-")) })
+}
