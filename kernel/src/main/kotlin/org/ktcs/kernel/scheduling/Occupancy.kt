@@ -59,6 +59,9 @@ internal class Occupancy(private val blocks: BlockIndex, private val corridors: 
     /** What [client] holds, as a copy. */
     fun heldBy(client: String): Set<String> = held[client]?.toSet().orEmpty()
 
+    /** Whether [client] holds a resource that passes [test], without copying what it holds. */
+    fun holdsAny(client: String, test: (String) -> Boolean): Boolean = held[client]?.any(test) == true
+
     fun mayTake(client: String, request: Request): Boolean =
         request.expanded.all { isAvailable(it, client) } &&
             request.entries.all { directions.admits(it, client) } &&

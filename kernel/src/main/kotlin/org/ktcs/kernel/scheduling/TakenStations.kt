@@ -10,7 +10,7 @@ package org.ktcs.kernel.scheduling
 internal fun Occupancy.standingInStationAhead(request: Request, safety: RouteSafety): Map<String, Set<String>>? {
     val entering = request.gates.ifEmpty { request.corridors.filter { it.entering } }
     val client = request.client.name
-    if (entering.isEmpty() || heldBy(client).any(safety::isDeadEnd)) return null
+    if (entering.isEmpty() || holdsAny(client, safety::isDeadEnd)) return null
     for (entry in entering) {
         val stub = safety.deadEndStopInside(client, request.keys, entry.block.members) ?: continue
         val others = holdersOf(stub).filter { it != client }
