@@ -200,8 +200,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     // those wait for it in turn (vehicles meeting head-on on a two-way stretch), the watchdog sees a deadlock and
     // routes one of them around it, instead of both waiting for good.
     private fun heldBackBy(request: Request): Map<String, Set<String>> {
-        val since = held.since(request) ?: return emptyMap()
-        if (clock.elapsedMillis() - since < HELD_BACK_REPORT_MILLIS || request !in held) return emptyMap()
+        val heldFor = held.heldFor(request, clock.elapsedMillis())
+        if (heldFor < HELD_BACK_REPORT_MILLIS || request !in held) return emptyMap()
         if (held.reason(request) == GrantWait.STATION_TAKEN) stationTaken(request)?.let { return it }
         return safety.blockersAfter(request.client.name, request.keys, keysBehind(request.client, request.resources))
     }
@@ -273,11 +273,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
      * Those held back for longer than two watchdog periods, or [DEAD_END_RETREAT_MILLIS] for a retreat into a dead-end
      * bay; each retreat point is searched for when asked for.
      */
-    override fun retreats(eligible: (String) -> Boolean): Sequence<Retreat> {
-        val now = clock.elapsedMillis()
-        val heldFor = held.all.associate { it.client.name to now - (held.since(it) ?: now) }
-        return parks.retreats(heldFor, eligible, ::claimEnds, safety::isDeadEnd)
-    }
+    override fun retreats(eligible: (String) -> Boolean): Sequence<Retreat> =
+        parks.retreats(held.heldFor(clock.elapsedMillis()), eligible, ::claimEnds, safety::isDeadEnd)
 
     override fun retreatPoint(client: String): String? = parks.retreatPoint(client, claimEnds())
 
@@ -288,8 +285,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
 
     /** Retries the grants held back for longer than the park test's patience, which the local rule alone decides now. */
     override fun retryOverdue() {
-        val now = clock.elapsedMillis()
-        if (held.all.any { now - (held.since(it) ?: now) >= PARK_TEST_PATIENCE_MILLIS }) retryDeferred()
+        if (held.heldFor(clock.elapsedMillis()).values.any { it >= PARK_TEST_PATIENCE_MILLIS }) retryDeferred()
     }
 
     private fun newCorridorSteps() = CorridorSteps(corridors, occupancy.corridorDirections) { claims[it] }
@@ -339,7 +335,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
                 else -> null
             }
             if (refusal != null) {
-                held.holdBack(request, refusal, clock.elapsedMillis())
+                val heldFor = held.holdBack(request, refusal, clock.elapsedMillis())
+                if (refusal != GrantWait.PARK_TEST && heldFor >= HELD_BACK_REPORT_MILLIS) queue += openStubGate(request)
                 continue
             }
             held.granted(request)
@@ -348,6 +345,12 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
         }
     }
 
+    // Held back in a station stub for the report delay, a vehicle keeps nobody out of the corridor it leaves into: the
+    // vehicles heading the other way pass the stub's mouth, or leave the stub it waits for, instead of waiting for it.
+    private fun openStubGate(request: Request): Collection<Request> =
+        occupancy.openGatesInStub(request.client.name, safety::isDeadEnd)
+            .also { if (it.isNotEmpty()) safety.changed(request.client.name) }.let(pending::waitingFor)
+
     private fun mayGrant(request: Request, behind: Set<String>): Boolean =
         safety.mayGrant(request.client.name, request.keys, behind) {
             keysBehind(request.client, listOf(request.resources, it))
@@ -355,11 +358,9 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
 
     private fun stationTaken(request: Request) = occupancy.standingInStationAhead(request, safety)
 
-    private fun leavesDeadHole(request: Request, behind: Set<String>): Boolean {
-        val since = held.since(request)
-        if (since != null && clock.elapsedMillis() - since >= DEAD_HOLE_PATIENCE_MILLIS) return false
-        return safety.leavesDeadHole(request.client.name, request.keys, behind)
-    }
+    private fun leavesDeadHole(request: Request, behind: Set<String>): Boolean =
+        held.heldFor(request, clock.elapsedMillis()) < DEAD_HOLE_PATIENCE_MILLIS &&
+            safety.leavesDeadHole(request.client.name, request.keys, behind)
 
     // The first requests of the clients that ask for [key].
     private fun requestersOf(key: String): List<RouteSafety.Requester> =
@@ -370,8 +371,7 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
     // The park test is a preference, not a wall: a grant it has held back for PARK_TEST_PATIENCE_MILLIS is left to the
     // local rule alone (whose holds the watchdog sees), so a plant the test judges too pessimistically never freezes.
     private fun parkSafe(request: Request, behind: Set<String>): Boolean {
-        val since = held.since(request)
-        if (since != null && clock.elapsedMillis() - since >= PARK_TEST_PATIENCE_MILLIS) {
+        if (held.heldFor(request, clock.elapsedMillis()) >= PARK_TEST_PATIENCE_MILLIS) {
             if (held.reason(request) == GrantWait.PARK_TEST) grantsAfterPatience++
             return true
         }

@@ -21,17 +21,21 @@ internal class HeldBackRequests {
 
     operator fun contains(request: Request): Boolean = request in requests
 
-    /** When [request] was first refused (kernel clock millis), if it was and has not been granted since. */
-    fun since(request: Request): Long? = since[request.seq]
+    /** For how long [request] has been held back since its first refusal (kernel clock millis); 0 if it is not. */
+    fun heldFor(request: Request, now: Long): Long = now - (since[request.seq] ?: now)
 
     /** Why [request] was refused last, if it was and has not been granted since. */
     fun reason(request: Request): GrantWait? = reasons[request.seq]
 
-    fun holdBack(request: Request, why: GrantWait, now: Long) {
+    /** Holds [request] back for [why]; returns for how long it has been held back since its first refusal. */
+    fun holdBack(request: Request, why: GrantWait, now: Long): Long {
         reasons[request.seq] = why
         requests += request
-        since.putIfAbsent(request.seq, now)
+        return now - (since.putIfAbsent(request.seq, now) ?: now)
     }
+
+    /** For how long each client's request held back now has been (kernel clock millis), by client name. */
+    fun heldFor(now: Long): Map<String, Long> = requests.associate { it.client.name to now - (since[it.seq] ?: now) }
 
     fun granted(request: Request) {
         since.remove(request.seq)

@@ -18,3 +18,11 @@ internal fun Occupancy.standingInStationAhead(request: Request, safety: RouteSaf
     }
     return null
 }
+
+/**
+ * Drops [client]'s gates ([Request.gates]) if it stands in a dead end ([isDeadEnd]: a station stub), where it waits
+ * off the aisle for the way out the traffic rule holds back: the corridor is then free for the vehicles heading the
+ * other way, which need not pass it. Returns the wake-up keys of the corridors it so left.
+ */
+internal fun Occupancy.openGatesInStub(client: String, isDeadEnd: (String) -> Boolean): Set<String> =
+    if (holdsAny(client, isDeadEnd)) leaveGates(client) else emptySet()
