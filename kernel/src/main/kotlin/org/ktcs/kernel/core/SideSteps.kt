@@ -1,5 +1,6 @@
 package org.ktcs.kernel.core
 
+import org.ktcs.api.model.BlockType
 import org.ktcs.api.model.PlantModel
 
 /**
@@ -9,11 +10,14 @@ import org.ktcs.api.model.PlantModel
  * other wants out) are broken that way: the one in the aisle steps to an aisle point the other does not need, lets it
  * out and comes back. Two vehicles head-on inside an aisle, or at its end, need more: one backs off along the other's
  * way (points the other needs but nobody holds may be passed, not stopped on) into a stub or a cross aisle beyond it.
- * The caller says which points are held and which are needed; the router then checks the way there and back.
+ * Points of a SINGLE_VEHICLE_ONLY block are passed, not offered: a vehicle standing on one holds the whole block, in
+ * the way of every vehicle crossing it. The caller says which points are held and which are needed; the router then
+ * checks the way there and back.
  */
 internal class SideSteps {
     private var model: PlantModel? = null
     private var next: Map<String, List<String>> = emptyMap()
+    private var inSingleBlock: Set<String> = emptySet()
 
     /**
      * The free points near [from] in [layout], nearest first: [held] points are neither passed nor offered, [needed]
@@ -27,6 +31,9 @@ internal class SideSteps {
     ): List<String> {
         if (layout !== model) {
             next = successors(layout)
+            inSingleBlock = layout.blocks.filter { it.type == BlockType.SINGLE_VEHICLE_ONLY }.flatMapTo(HashSet()) {
+                it.members
+            }
             model = layout
         }
         val found = ArrayList<String>()
@@ -34,7 +41,7 @@ internal class SideSteps {
         val seen = hashSetOf(from)
         repeat(MAX_HOPS) {
             frontier = frontier.flatMap { next[it].orEmpty() }.filter { !held(it) && seen.add(it) }
-            frontier.filterTo(found) { !needed(it) }
+            frontier.filterTo(found) { !needed(it) && it !in inSingleBlock }
         }
         return found
     }

@@ -2,6 +2,8 @@ package org.ktcs.kernel.core
 
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.shouldBe
+import org.ktcs.api.model.Block
+import org.ktcs.api.model.BlockType
 import org.ktcs.api.model.Path
 import org.ktcs.api.model.PlantModel
 import org.ktcs.api.model.Point
@@ -34,6 +36,12 @@ class SideStepsTest : FunSpec({
     test("passes a point another vehicle of the deadlock needs but does not stop on it") {
         val needed = setOf("A3", "A2")
         SideSteps().near(plant, "A4", held = { false }, needed = needed::contains) shouldBe listOf("X", "A1", "S")
+    }
+
+    // Standing on A3 or A4 would hold the whole block, in the way of every vehicle crossing it.
+    test("passes the points of a single-vehicle block but does not stop on them") {
+        val block = Block("Square", BlockType.SINGLE_VEHICLE_ONLY, setOf("A3", "A4", "A3 --- A4"))
+        SideSteps().near(plant.copy(blocks = listOf(block)), "A2", held = { false }) shouldBe listOf("A1", "S", "X")
     }
 
     test("a side step a vehicle took is not offered to it again until the memory has passed, nor kept longer") {
