@@ -43,6 +43,26 @@ class StalledRandomPlantsTest : FunSpec({
         val report = runs(RandomPlant(3, 3, lanes, 3, 2, true, 1415255446207580030L), 536509924367207191L)
         report.deadlocksDetected shouldBe 0
     }
+
+    // A 3x3 two-way grid with a corridor of two points and a station stub beside each: the vehicle in one stub, bound
+    // for the other (taken), held the corridor's direction for its way out (its gate), and the vehicle in the other
+    // stub had to leave the other way: 1 of 8 orders finished. Now a gate held back for the report delay opens.
+    test("a vehicle held back in a station stub gives up its corridor gate") {
+        val lanes =
+            listOf(NONE, TWO_WAY, TWO_WAY, TWO_WAY, NONE, TWO_WAY, TWO_WAY, TWO_WAY, TWO_WAY, TWO_WAY, TWO_WAY, TWO_WAY)
+        runs(RandomPlant(3, 3, lanes, 3, 4, true, 1309181810394208711L), 1434328759971181348L)
+    }
+
+    // A 3x3 grid of one-way and two-way lanes with a single-vehicle block: a vehicle of a blocked claim stepped aside
+    // onto a point of the block, holding the whole block in the way of the vehicle that had to cross it next: 1 of 8
+    // orders finished. Now side steps do not stop in such a block.
+    test("a side step does not stop on a point of a single-vehicle block") {
+        val lanes = listOf(
+            NONE, TWO_WAY, BACKWARD, NONE, FORWARD, BACKWARD,
+            TWO_WAY, FORWARD, BACKWARD, BACKWARD, FORWARD, FORWARD,
+        )
+        runs(RandomPlant(3, 3, lanes, 4, 4, true, -485365344899405251L), 7112968208872129199L)
+    }
 }) {
     private companion object {
         const val ORDERS = 8
