@@ -285,7 +285,8 @@ class DefaultScheduler(model: PlantModel, private val clock: KernelClock) : Sche
 
     /** Retries the grants held back for longer than the park test's patience, which the local rule alone decides now. */
     override fun retryOverdue() {
-        if (held.heldFor(clock.elapsedMillis()).values.any { it >= PARK_TEST_PATIENCE_MILLIS }) retryDeferred()
+        val now = clock.elapsedMillis()
+        if (held.all.any { held.heldFor(it, now) >= PARK_TEST_PATIENCE_MILLIS }) retryDeferred()
     }
 
     private fun newCorridorSteps() = CorridorSteps(corridors, occupancy.corridorDirections) { claims[it] }

@@ -31,11 +31,12 @@ internal class HeldBackRequests {
     fun holdBack(request: Request, why: GrantWait, now: Long): Long {
         reasons[request.seq] = why
         requests += request
-        return now - (since.putIfAbsent(request.seq, now) ?: now)
+        since.putIfAbsent(request.seq, now)
+        return heldFor(request, now)
     }
 
     /** For how long each client's request held back now has been (kernel clock millis), by client name. */
-    fun heldFor(now: Long): Map<String, Long> = requests.associate { it.client.name to now - (since[it.seq] ?: now) }
+    fun heldFor(now: Long): Map<String, Long> = requests.associate { it.client.name to heldFor(it, now) }
 
     fun granted(request: Request) {
         since.remove(request.seq)
