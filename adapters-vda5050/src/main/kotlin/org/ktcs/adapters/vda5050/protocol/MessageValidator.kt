@@ -12,6 +12,7 @@ import kotlinx.serialization.json.JsonPrimitive
 import tools.jackson.core.JacksonException
 import tools.jackson.databind.JsonNode
 import tools.jackson.databind.json.JsonMapper
+import tools.jackson.databind.node.ObjectNode
 import java.util.concurrent.ConcurrentHashMap
 
 /** The messages a vehicle sends, each with its VDA 5050 2.0.0 JSON schema (in this module's resources). */
@@ -56,8 +57,24 @@ object MessageValidator {
     internal fun notJson(error: JacksonException) = Checked.Invalid(listOf("not JSON: ${error.originalMessage}"))
 
     /** What is wrong with [tree] as a message on [topic]; empty when it is valid. */
-    internal fun schemaProblems(topic: IncomingTopic, tree: JsonNode): List<String> = schema(topic).validate(tree).map {
+    internal fun schemaProblems(topic: IncomingTopic, tree: JsonNode): List<String> =
+        problems(schema(topic).validate(tree))
+
+    /**
+     * What is wrong with the fields [tree] has as fields of a `state` message; empty when they are valid. The fields a
+     * message must have are not asked for: the caller knows the message has them.
+     */
+    internal fun stateFieldProblems(tree: JsonNode): List<String> = problems(stateFields.validate(tree))
+
+    private fun problems(errors: List<com.networknt.schema.Error>) = errors.map {
         "${it.instanceLocation.toString().ifEmpty { "$" }}: ${it.message}"
+    }
+
+    private val stateFields by lazy {
+        val schema = javaClass.classLoader.getResourceAsStream("$SCHEMAS/${IncomingTopic.STATE.schemaFile}")!!.use {
+            mapper.readTree(it) as ObjectNode
+        }
+        registry.getSchema(schema.apply { remove("required") })
     }
 
     /** What is wrong with [json] as a message on [topic]; empty when it is valid. */

@@ -1,10 +1,10 @@
 package org.ktcs.adapters.vda5050.protocol
 
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.jsonObject
 import org.ktcs.adapters.vda5050.protocol.MessageValidator.toKotlinx
 import tools.jackson.core.JacksonException
-import tools.jackson.databind.JsonNode
-import tools.jackson.databind.node.ArrayNode
-import tools.jackson.databind.node.ObjectNode
 
 /** A state message read: the message, or what is wrong with it. */
 sealed interface StateRead {
@@ -15,62 +15,109 @@ sealed interface StateRead {
 
 /**
  * Reads one vehicle's `state` messages, checked against the schema if [validate]. A vehicle repeats its state every
- * second, and the bulk of a state message (its node and edge states, action states, loads, errors and information) is
- * mostly what the last one said: an array element equal to one in the same array of the vehicle's last valid message
- * was checked and decoded then, so it is neither checked nor decoded again (when the vehicle passes a node, its node
- * and edge states lose their first element and keep the rest). The schema constrains each element of these arrays on
- * its own (no condition ties it to its index, another element or another field), so the message is valid when the
- * rest of it is. One reader per vehicle.
+ * second, and most of a state message is what the last one said: a field spelt as in the vehicle's last valid message,
+ * or an element of its node and edge states, action states, loads, errors or information spelt as one in the same
+ * array of that message, was checked and decoded then, so it is neither checked nor decoded again (a driving vehicle
+ * changes its header, position, distance and battery, and when it passes a node its node and edge states lose their
+ * first element and keep the rest). The schema constrains a state message's fields each on its own but for the ones
+ * it requires, and the elements of these arrays each on its own (no condition ties one to its index, another element
+ * or another field), so a message with the same fields as the last valid one is valid when what changed is. The
+ * message is first only scanned ([StateScan]) to find its fields and elements by their bytes; a tree is built, checked
+ * and decoded for what changed alone. One reader per vehicle.
  */
 internal class StateReader(private val validate: Boolean) {
-    // The arrays of the last valid message as read, each element with what it decoded to; guarded by this.
-    private var lastArrays: Map<String, ArrayNode> = emptyMap()
-    private var lastElements: Map<String, Map<JsonNode, Any>> = emptyMap()
-    private var lastState: State? = null
+    private var last: LastValid? = null // guarded by this
 
     /** [payload] (UTF-8 JSON) read as a state message; throws what decoding throws for a message that is not one. */
     @Synchronized
     fun read(payload: ByteArray): StateRead {
+        val scan = StateScan.of(payload, REPEATING)
+        val last = last
+        val repeated = last?.let {
+            scan.arrays.filter { (name, array) -> it.arrays[name] == array.whole }.keys
+        }.orEmpty()
+        // What is left in the message to check and decode: the fields and elements no valid message of the vehicle had.
+        val freshIndexes = scan.arrays.mapValues { (name, array) ->
+            val known = last?.elements?.get(name).orEmpty()
+            if (name in repeated) emptyList() else array.elements.indices.filter { array.elements[it] !in known }
+        }
+        val changed = last?.changedFields(scan)
         val tree = try {
-            MessageValidator.read(payload)
+            MessageValidator.read(scan.withOnly(changed ?: scan.fields.orEmpty(), freshIndexes, payload))
         } catch (error: JacksonException) {
             return StateRead.Invalid(MessageValidator.notJson(error).problems)
         }
-        val message = tree as? ObjectNode
-        val arrays = message?.let {
-            REPEATING.mapNotNull { name -> (it.get(name) as? ArrayNode)?.let { array -> name to array } }.toMap()
-        }.orEmpty()
-        val previous = lastState
-        val repeated = if (previous == null) emptySet() else arrays.filter { (name, a) -> lastArrays[name] == a }.keys
-        // What is left in the message to check and decode: the elements no valid message of the vehicle had.
-        val freshIndexes = arrays.mapValues { (name, array) ->
-            val known = lastElements[name].orEmpty()
-            if (name in repeated) emptyList() else array.indices().filter { array[it] !in known }
-        }
-        freshIndexes.forEach { (name, fresh) ->
-            message!!.replace(name, message.arrayNode().addAll(fresh.map(arrays.getValue(name)::get)))
-        }
         if (validate) {
-            val problems = MessageValidator.schemaProblems(IncomingTopic.STATE, tree)
+            val problems = if (changed == null) {
+                MessageValidator.schemaProblems(IncomingTopic.STATE, tree)
+            } else {
+                MessageValidator.stateFieldProblems(tree)
+            }
             if (problems.isNotEmpty()) return StateRead.Invalid(problems.map { located(it, freshIndexes) })
         }
-        val decoded = Vda5050Json.decodeFromJsonElement(State.serializer(), tree.toKotlinx())
-        val lists = arrays.mapValues { (name, array) ->
+        val json = tree.toKotlinx()
+        val fields = (json as? JsonObject)?.filterKeys { it !in scan.arrays }.orEmpty()
+        val allFields = if (changed == null) fields else last.fields + fields
+        val decoded = if (changed == null) {
+            Vda5050Json.decodeFromJsonElement(State.serializer(), json)
+        } else {
+            Vda5050Json.decodeFromJsonElement(State.serializer(), JsonObject(last.fields + json.jsonObject))
+        }
+        val lists = scan.arrays.mapValues { (name, array) ->
             if (name in repeated) {
-                previous!!.list(name)
+                last!!.state.list(name)
             } else {
-                val known = lastElements[name].orEmpty()
+                val known = last?.elements?.get(name).orEmpty()
                 val fresh = decoded.list(name).iterator()
-                array.values().map { element -> known[element] ?: fresh.next() }
+                array.elements.map { element -> known[element] ?: fresh.next() }
             }
         }
         val state = if (lists.isEmpty()) decoded else decoded.with(lists)
-        lastElements = arrays.mapValues { (name, array) ->
-            if (name in repeated) lastElements.getValue(name) else array.values().zip(lists.getValue(name)).toMap()
-        }
-        lastArrays = arrays
-        lastState = state
+        this.last = LastValid(
+            // Read whole, its fields are the JSON object's unless it named one twice (the parser keeps the last).
+            scanned = scan.fields?.takeIf { changed != null || fields.size == it.size },
+            fields = allFields,
+            arrays = scan.arrays.mapValues { it.value.whole },
+            elements = scan.arrays.mapValues { (name, array) ->
+                if (name in repeated) {
+                    last!!.elements.getValue(
+                        name,
+                    )
+                } else {
+                    array.elements.zip(lists.getValue(name)).toMap()
+                }
+            },
+            state = state,
+        )
         return StateRead.Valid(state)
+    }
+
+    /** What the last valid message said, as the next one is read against it. */
+    private class LastValid(
+        /** Its fields but the arrays, as spelt; null if it was not scanned or named a field twice or as an array. */
+        val scanned: List<StateScan.Field>?,
+        /** Its fields but the arrays, as JSON. */
+        val fields: Map<String, JsonElement>,
+        val arrays: Map<String, ByteSlice>,
+        /** The elements of each of its arrays, as spelt, with what each decoded to. */
+        val elements: Map<String, Map<ByteSlice, Any>>,
+        val state: State,
+    ) {
+        /**
+         * The fields of [scan] not spelt as in this message; null if [scan] does not name the same fields in the same
+         * order (and the same arrays) as this message.
+         */
+        fun changedFields(scan: StateScan): List<StateScan.Field>? {
+            val fields = scan.fields ?: return null
+            if (scanned == null || fields.size != scanned.size || arrays.keys != scan.arrays.keys) return null
+            val changed = ArrayList<StateScan.Field>()
+            fields.forEachIndexed { i, field ->
+                val before = scanned[i]
+                if (field.name != before.name) return null
+                if (field.value != before.value) changed += field
+            }
+            return changed
+        }
     }
 
     /** [problem] with the index of an array element as the vehicle sent it, not as it was checked. */
@@ -80,8 +127,6 @@ internal class StateReader(private val validate: Boolean) {
         val original = freshIndexes[name]?.getOrNull(index.toInt()) ?: return problem
         return "/$name/$original" + problem.substring(match.range.last + 1)
     }
-
-    private fun ArrayNode.indices(): IntRange = 0 until size()
 
     private fun State.list(name: String): List<Any> = when (name) {
         NODE_STATES -> nodeStates
@@ -109,7 +154,7 @@ internal class StateReader(private val validate: Boolean) {
         const val LOADS = "loads"
         const val ERRORS = "errors"
         const val INFORMATION = "information"
-        val REPEATING = listOf(NODE_STATES, EDGE_STATES, ACTION_STATES, LOADS, ERRORS, INFORMATION)
+        val REPEATING = setOf(NODE_STATES, EDGE_STATES, ACTION_STATES, LOADS, ERRORS, INFORMATION)
         val ELEMENT = Regex("^/(${REPEATING.joinToString("|")})/(\\d+)")
     }
 }

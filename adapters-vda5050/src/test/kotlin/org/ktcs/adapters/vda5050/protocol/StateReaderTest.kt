@@ -3,6 +3,8 @@ package org.ktcs.adapters.vda5050.protocol
 import io.kotest.core.spec.style.FunSpec
 import io.kotest.matchers.collections.shouldHaveSize
 import io.kotest.matchers.shouldBe
+import io.kotest.matchers.shouldNotBe
+import io.kotest.matchers.string.shouldContain
 import io.kotest.matchers.string.shouldStartWith
 import io.kotest.matchers.types.shouldBeInstanceOf
 import io.kotest.matchers.types.shouldBeSameInstanceAs
@@ -68,5 +70,27 @@ class StateReaderTest : FunSpec({
             "{\"headerId\":".toByteArray(),
         ).shouldBeInstanceOf<StateRead.Invalid>().problems.single() shouldStartWith
             "not JSON: "
+    }
+
+    test("a field spelt as before is taken as read then; other fields, or the same named twice, are read whole") {
+        val reader = StateReader(validate = true)
+        reader.read(json(state(1, route))).shouldBeInstanceOf<StateRead.Valid>()
+        // A message lacking a field the schema requires is read whole, and what it lacks is named.
+        val withoutSafety = String(
+            json(state(2, route)),
+        ).replace(",\"safetyState\":{\"eStop\":\"NONE\",\"fieldViolation\":false}", "")
+        withoutSafety shouldNotBe String(json(state(2, route)))
+        reader.read(withoutSafety.toByteArray()).shouldBeInstanceOf<StateRead.Invalid>().problems.single() shouldContain
+            "safetyState"
+        val withoutErrors = String(json(state(2, route))).replace(",\"errors\":[]", "")
+        withoutErrors shouldNotBe String(json(state(2, route)))
+        reader.read(withoutErrors.toByteArray()).shouldBeInstanceOf<StateRead.Invalid>().problems.single() shouldContain
+            "errors"
+        // Named twice, the parser keeps the last: so it stays when only the first changes.
+        val twice = { first: String -> String(json(state(3, route))).replaceFirst("{", "{\"orderId\":\"$first\",") }
+        reader.read(twice("o-0").toByteArray()).shouldBeInstanceOf<StateRead.Valid>().state.orderId shouldBe "o-1"
+        reader.read(twice("o-9").toByteArray()).shouldBeInstanceOf<StateRead.Valid>().state.orderId shouldBe "o-1"
+        reader.read(json(state(4, route, battery = 12.0))).shouldBeInstanceOf<StateRead.Valid>().state shouldBe
+            state(4, route, battery = 12.0)
     }
 })
