@@ -80,6 +80,7 @@ class Vda5050Broker(private val settings: BrokerSettings) : AutoCloseable {
                 settings.embeddedPort,
                 settings.username,
                 settings.password,
+                batchMillis = settings.embeddedBatchMillis,
             )
             return BuiltinBroker(config).also {
                 it.start()

@@ -34,6 +34,7 @@ class Vda5050Extension : KtcsExtension {
             password = config[Vda5050Settings.password],
             mapId = config[Vda5050Settings.mapId],
             implementation = config[Vda5050Settings.embeddedImplementation],
+            embeddedBatchMillis = config[Vda5050Settings.embeddedBatchMillis].toLong(),
         )
     }
 }

@@ -1,5 +1,6 @@
 package org.ktcs.adapters.vda5050
 
+import org.ktcs.adapters.vda5050.broker.BrokerConfig
 import org.ktcs.adapters.vda5050.mqtt.EmbeddedBrokerKind
 import org.ktcs.extension.config.Setting
 import org.ktcs.extension.config.intSetting
@@ -34,6 +35,14 @@ object Vda5050Settings {
             "broker's thread) or 'hivemq' (HiveMQ Community Edition).",
         EmbeddedBrokerKind::of,
     )
+    val embeddedBatchMillis = intSetting(
+        "vda5050.embeddedBroker.batchMillis",
+        BrokerConfig.DEFAULT_BATCH_MILLIS.toInt(),
+        0..50,
+        "How many milliseconds the builtin embedded broker's thread pauses after each round of work, so that the " +
+            "messages arriving meanwhile are read in one round (0: every message wakes it on its own). Saves CPU " +
+            "with many vehicles; a message waits at most this long.",
+    )
     val username = stringSetting(
         "vda5050.username",
         "",
@@ -56,6 +65,7 @@ object Vda5050Settings {
         embeddedBindAddress,
         embeddedPort,
         embeddedImplementation,
+        embeddedBatchMillis,
         username,
         password,
         mapId,

@@ -17,6 +17,7 @@ import org.ktcs.extension.config.ConfigException
 import org.slf4j.LoggerFactory
 import java.net.InetSocketAddress
 import java.nio.ByteBuffer
+import java.nio.channels.spi.SelectorProvider
 import java.util.concurrent.TimeUnit
 
 /**
@@ -40,7 +41,12 @@ class BuiltinBroker(private val config: BrokerConfig) : MessageLink, AutoCloseab
     /** Starts listening; an address or port it cannot use is a [ConfigException] naming the setting. */
     fun start() {
         val address = BindCheck.check(config.bindAddress, config.port)
-        val loop = MultiThreadIoEventLoopGroup(1, DefaultThreadFactory(THREAD_NAME, true), NioIoHandler.newFactory())
+        val loop =
+            MultiThreadIoEventLoopGroup(
+                1,
+                DefaultThreadFactory(THREAD_NAME, true),
+                NioIoHandler.newFactory(SelectorProvider.provider(), BatchingSelect(config.batchMillis)),
+            )
         val bound = ServerBootstrap().group(loop).channel(NioServerSocketChannel::class.java)
             .childHandler(initializer()).bind(InetSocketAddress(address, config.port)).awaitUninterruptibly()
         if (!bound.isSuccess) {

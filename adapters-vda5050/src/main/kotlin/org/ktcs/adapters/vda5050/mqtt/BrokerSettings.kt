@@ -1,5 +1,6 @@
 package org.ktcs.adapters.vda5050.mqtt
 
+import org.ktcs.adapters.vda5050.broker.BrokerConfig
 import java.net.URI
 
 /**
@@ -14,6 +15,7 @@ data class BrokerSettings(
     val password: String = "",
     val mapId: String = "",
     val implementation: EmbeddedBrokerKind = EmbeddedBrokerKind.BUILTIN,
+    val embeddedBatchMillis: Long = BrokerConfig.DEFAULT_BATCH_MILLIS,
 ) {
     val isEmbedded: Boolean get() = url.trim().equals(EMBEDDED, ignoreCase = true)
 
