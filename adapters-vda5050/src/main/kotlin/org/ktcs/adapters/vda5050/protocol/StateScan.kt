@@ -20,9 +20,9 @@ internal class ByteSlice(private val bytes: ByteArray, private val from: Int, pr
     override fun equals(other: Any?) = other is ByteSlice && to - from == other.to - other.from &&
         Arrays.equals(bytes, from, to, other.bytes, other.from, other.to)
 
-    /** Eight bytes a step: a state message's arrays are hashed element by element on every message. */
     override fun toString() = String(bytes, from, size, Charsets.UTF_8)
 
+    /** Eight bytes a step: a state message's arrays are hashed element by element on every message. */
     override fun hashCode(): Int {
         if (hash == 0) {
             var h = to - from
