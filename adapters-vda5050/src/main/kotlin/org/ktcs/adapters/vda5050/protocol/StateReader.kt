@@ -31,7 +31,7 @@ internal class StateReader(private val validate: Boolean) {
     /** [payload] (UTF-8 JSON) read as a state message; throws what decoding throws for a message that is not one. */
     @Synchronized
     fun read(payload: ByteArray): StateRead {
-        val scan = StateScan.of(payload, REPEATING)
+        val scan = SPLITTING.scan(payload)
         val last = last
         val repeated = last?.let {
             scan.arrays.filter { (name, array) -> it.arrays[name] == array.whole }.keys
@@ -155,6 +155,7 @@ internal class StateReader(private val validate: Boolean) {
         const val ERRORS = "errors"
         const val INFORMATION = "information"
         val REPEATING = setOf(NODE_STATES, EDGE_STATES, ACTION_STATES, LOADS, ERRORS, INFORMATION)
+        val SPLITTING = StateScan.Splitting(REPEATING)
         val ELEMENT = Regex("^/(${REPEATING.joinToString("|")})/(\\d+)")
     }
 }

@@ -89,16 +89,13 @@ internal class StateScan(val fields: List<Field>?, val arrays: Map<String, Array
         return if (at == size) out else out.copyOf(at)
     }
 
-    companion object {
-        /** [payload] scanned, its fields named in [arrays] element by element (the last of a repeated name). */
-        fun of(payload: ByteArray, arrays: Set<String>): StateScan =
-            Scanner(
-                payload,
-                arrays.associateBy {
-                    "\"$it\"".toByteArray().let { name -> ByteSlice(name, 0, name.size) }
-                },
-            )
-                .scan()
-                ?: StateScan(null, emptyMap())
+    /** Scans messages, their fields named in [arrays] element by element (the last of a repeated name). */
+    class Splitting(arrays: Set<String>) {
+        private val quotedNames = arrays.associateBy {
+            "\"$it\"".toByteArray().let { name -> ByteSlice(name, 0, name.size) }
+        }
+
+        /** [payload] scanned. */
+        fun scan(payload: ByteArray): StateScan = Scanner(payload, quotedNames).scan() ?: StateScan(null, emptyMap())
     }
 }

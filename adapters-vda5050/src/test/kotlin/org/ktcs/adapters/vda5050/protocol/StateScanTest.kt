@@ -5,17 +5,21 @@ import io.kotest.matchers.collections.shouldHaveSize
 import io.kotest.matchers.shouldBe
 import io.kotest.matchers.shouldNotBe
 
-private fun ByteArray.slices(name: String) = StateScan.of(this, setOf(name)).arrays.getValue(name).elements
+private fun ByteArray.slices(name: String) = StateScan.Splitting(setOf(name)).scan(this).arrays.getValue(name).elements
 
 private fun String.scanned(kept: Map<String, List<Int>>) =
-    String(StateScan.of(toByteArray(), kept.keys).let { it.withOnly(it.fields.orEmpty(), kept, toByteArray()) })
+    String(
+        StateScan.Splitting(kept.keys).scan(toByteArray()).let {
+            it.withOnly(it.fields.orEmpty(), kept, toByteArray())
+        },
+    )
 
 /** A state message's top level and arrays, found without a tree, spelt exactly as sent. */
 class StateScanTest : FunSpec({
     test("fields and elements keep their bytes, white space, escapes and nesting included") {
         val message =
             """ { "a" : 1 , "nodeStates" : [ {"x": "],[{\"}"} ,{"y":[1,{"z":[]}]}, 2.5e3 , "s" ] ,"b":{"c":[3]} } """
-        val scan = StateScan.of(message.toByteArray(), setOf("nodeStates"))
+        val scan = StateScan.Splitting(setOf("nodeStates")).scan(message.toByteArray())
         String(scan.withOnly(scan.fields!!, emptyMap(), byteArrayOf())) shouldBe """{"a" : 1,"b":{"c":[3]}}"""
         scan.fields!!.map { it.name.toString() } shouldBe listOf("\"a\"", "\"b\"")
         String(scan.withOnly(scan.fields!!.drop(1), emptyMap(), byteArrayOf())) shouldBe """{"b":{"c":[3]}}"""
