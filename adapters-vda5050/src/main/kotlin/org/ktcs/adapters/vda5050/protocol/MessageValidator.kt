@@ -13,6 +13,7 @@ import tools.jackson.core.JacksonException
 import tools.jackson.databind.JsonNode
 import tools.jackson.databind.json.JsonMapper
 import tools.jackson.databind.node.ObjectNode
+import java.util.Optional
 import java.util.concurrent.ConcurrentHashMap
 
 /** The messages a vehicle sends, each with its VDA 5050 2.0.0 JSON schema (in this module's resources). */
@@ -70,12 +71,21 @@ object MessageValidator {
         "${it.instanceLocation.toString().ifEmpty { "$" }}: ${it.message}"
     }
 
-    private val stateFields by lazy {
-        val schema = javaClass.classLoader.getResourceAsStream("$SCHEMAS/${IncomingTopic.STATE.schemaFile}")!!.use {
+    private val stateFields by lazy { registry.getSchema(schemaTree(IncomingTopic.STATE).apply { remove("required") }) }
+
+    private val quickSchemas = ConcurrentHashMap<IncomingTopic, Optional<QuickSchema>>()
+
+    /**
+     * [topic]'s schema as a [QuickSchema], which checks the values of a message by their bytes and accepts only what
+     * the schema does; null if the schema uses more than a quick schema knows.
+     */
+    internal fun quickSchema(topic: IncomingTopic): QuickSchema? =
+        quickSchemas.computeIfAbsent(topic) { Optional.ofNullable(QuickSchema.of(schemaTree(it))) }.orElse(null)
+
+    private fun schemaTree(topic: IncomingTopic): ObjectNode =
+        javaClass.classLoader.getResourceAsStream("$SCHEMAS/${topic.schemaFile}")!!.use {
             mapper.readTree(it) as ObjectNode
         }
-        registry.getSchema(schema.apply { remove("required") })
-    }
 
     /** What is wrong with [json] as a message on [topic]; empty when it is valid. */
     fun problems(topic: IncomingTopic, json: String): List<String> =

@@ -6,7 +6,7 @@ import java.nio.ByteOrder
 import java.util.Arrays
 
 /** Bytes [from] until [to] of [bytes], equal to another slice with the same bytes; never copied. */
-internal class ByteSlice(private val bytes: ByteArray, private val from: Int, private val to: Int) {
+internal class ByteSlice(val bytes: ByteArray, val from: Int, val to: Int) {
     private var hash = 0
 
     val size get() = to - from
