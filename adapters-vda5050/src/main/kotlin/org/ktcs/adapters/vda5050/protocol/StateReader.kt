@@ -1,8 +1,6 @@
 package org.ktcs.adapters.vda5050.protocol
 
-import kotlinx.serialization.json.JsonElement
 import kotlinx.serialization.json.JsonObject
-import kotlinx.serialization.json.jsonObject
 import org.ktcs.adapters.vda5050.protocol.MessageValidator.toKotlinx
 import tools.jackson.core.JacksonException
 
@@ -22,8 +20,10 @@ sealed interface StateRead {
  * first element and keep the rest). The schema constrains a state message's fields each on its own but for the ones
  * it requires, and the elements of these arrays each on its own (no condition ties one to its index, another element
  * or another field), so a message with the same fields as the last valid one is valid when what changed is. The
- * message is first only scanned ([StateScan]) to find its fields and elements by their bytes; a tree is built, checked
- * and decoded for what changed alone. One reader per vehicle.
+ * message is first only scanned ([StateScan]) to find its fields and elements by their bytes. What changed is checked
+ * by its bytes where the schema allows ([QuickSchema]: plain values, as the changing ones are), the rest in a tree by
+ * the schema validator; the fields and new elements are then decoded straight from their bytes. A message with other
+ * fields than the last is parsed, checked and decoded whole but for its known elements. One reader per vehicle.
  */
 internal class StateReader(private val validate: Boolean) {
     private var last: LastValid? = null // guarded by this
@@ -42,27 +42,12 @@ internal class StateReader(private val validate: Boolean) {
             if (name in repeated) emptyList() else array.elements.indices.filter { array.elements[it] !in known }
         }
         val changed = last?.changedFields(scan)
-        val tree = try {
-            MessageValidator.read(scan.withOnly(changed ?: scan.fields.orEmpty(), freshIndexes, payload))
-        } catch (error: JacksonException) {
-            return StateRead.Invalid(MessageValidator.notJson(error).problems)
-        }
-        if (validate) {
-            val problems = if (changed == null) {
-                MessageValidator.schemaProblems(IncomingTopic.STATE, tree)
-            } else {
-                MessageValidator.stateFieldProblems(tree)
-            }
-            if (problems.isNotEmpty()) return StateRead.Invalid(problems.map { located(it, freshIndexes) })
-        }
-        val json = tree.toKotlinx()
-        val fields = (json as? JsonObject)?.filterKeys { it !in scan.arrays }.orEmpty()
-        val allFields = if (changed == null) fields else last.fields + fields
-        val decoded = if (changed == null) {
-            Vda5050Json.decodeFromJsonElement(State.serializer(), json)
+        val read = if (changed == null) {
+            readWhole(scan, freshIndexes, payload)
         } else {
-            Vda5050Json.decodeFromJsonElement(State.serializer(), JsonObject(last.fields + json.jsonObject))
+            readChanges(scan, changed, freshIndexes, payload)
         }
+        val decoded = (read as? Read.Decoded)?.state ?: return (read as Read.Rejected).invalid
         val lists = scan.arrays.mapValues { (name, array) ->
             if (name in repeated) {
                 last!!.state.list(name)
@@ -74,9 +59,7 @@ internal class StateReader(private val validate: Boolean) {
         }
         val state = if (lists.isEmpty()) decoded else decoded.with(lists)
         this.last = LastValid(
-            // Read whole, its fields are the JSON object's unless it named one twice (the parser keeps the last).
-            scanned = scan.fields?.takeIf { changed != null || fields.size == it.size },
-            fields = allFields,
+            scanned = scan.fields?.takeIf { changed != null || read.fieldsRead == it.size },
             arrays = scan.arrays.mapValues { it.value.whole },
             elements = scan.arrays.mapValues { (name, array) ->
                 if (name in repeated) {
@@ -92,12 +75,71 @@ internal class StateReader(private val validate: Boolean) {
         return StateRead.Valid(state)
     }
 
+    /** A message read for what it says but its known array elements: decoded (with how many fields), or rejected. */
+    private sealed interface Read {
+        class Decoded(val state: State, val fieldsRead: Int) : Read
+
+        class Rejected(val invalid: StateRead.Invalid) : Read
+    }
+
+    /** The message's fields and its [fresh] elements parsed into a tree, checked against the whole schema, decoded. */
+    private fun readWhole(scan: StateScan, fresh: Map<String, List<Int>>, payload: ByteArray): Read {
+        val tree = try {
+            MessageValidator.read(scan.withOnly(scan.fields.orEmpty(), fresh, payload))
+        } catch (error: JacksonException) {
+            return Read.Rejected(StateRead.Invalid(MessageValidator.notJson(error).problems))
+        }
+        if (validate) {
+            val problems = MessageValidator.schemaProblems(IncomingTopic.STATE, tree)
+            if (problems.isNotEmpty()) return Read.Rejected(StateRead.Invalid(problems.map { located(it, fresh) }))
+        }
+        val json = tree.toKotlinx()
+        // Read whole, its fields are the JSON object's unless it named one twice (the parser keeps the last).
+        val fieldsRead = (json as? JsonObject)?.keys?.count { it !in scan.arrays } ?: 0
+        return Read.Decoded(Vda5050Json.decodeFromJsonElement(State.serializer(), json), fieldsRead)
+    }
+
+    /**
+     * A message with the fields of the last valid one: the [changed] fields and the [fresh] elements checked (by their
+     * bytes where the schema allows, [QuickSchema]; the rest in a tree against the schema without `required`), then
+     * its fields and fresh elements decoded straight from their bytes.
+     */
+    private fun readChanges(
+        scan: StateScan,
+        changed: List<StateScan.Field>,
+        fresh: Map<String, List<Int>>,
+        payload: ByteArray,
+    ): Read {
+        val fields = scan.fields!!
+        if (validate) {
+            val quick = QUICK
+            val slowFields = changed.filter { quick?.property(it.name.unquoted())?.accepts(it.value) != true }
+            val slowIndexes = fresh.mapValues { (name, indexes) ->
+                val items = quick?.property(name)?.items
+                indexes.filter { items?.accepts(scan.arrays.getValue(name).elements[it]) != true }
+            }
+            if (slowFields.isNotEmpty() || slowIndexes.values.any { it.isNotEmpty() }) {
+                val tree = try {
+                    MessageValidator.read(scan.withOnly(slowFields, slowIndexes, payload))
+                } catch (error: JacksonException) {
+                    return Read.Rejected(StateRead.Invalid(MessageValidator.notJson(error).problems))
+                }
+                val problems = MessageValidator.stateFieldProblems(tree)
+                if (problems.isNotEmpty()) {
+                    return Read.Rejected(StateRead.Invalid(problems.map { located(it, slowIndexes) }))
+                }
+            }
+        }
+        val text = String(scan.withOnly(fields, fresh, payload), Charsets.UTF_8)
+        return Read.Decoded(Vda5050Json.decodeFromString(State.serializer(), text), fields.size)
+    }
+
+    private fun ByteSlice.unquoted() = String(bytes, from + 1, size - 2, Charsets.UTF_8)
+
     /** What the last valid message said, as the next one is read against it. */
     private class LastValid(
         /** Its fields but the arrays, as spelt; null if it was not scanned or named a field twice or as an array. */
         val scanned: List<StateScan.Field>?,
-        /** Its fields but the arrays, as JSON. */
-        val fields: Map<String, JsonElement>,
         val arrays: Map<String, ByteSlice>,
         /** The elements of each of its arrays, as spelt, with what each decoded to. */
         val elements: Map<String, Map<ByteSlice, Any>>,
@@ -156,6 +198,7 @@ internal class StateReader(private val validate: Boolean) {
         const val INFORMATION = "information"
         val REPEATING = setOf(NODE_STATES, EDGE_STATES, ACTION_STATES, LOADS, ERRORS, INFORMATION)
         val SPLITTING = StateScan.Splitting(REPEATING)
+        val QUICK by lazy { MessageValidator.quickSchema(IncomingTopic.STATE) }
         val ELEMENT = Regex("^/(${REPEATING.joinToString("|")})/(\\d+)")
     }
 }

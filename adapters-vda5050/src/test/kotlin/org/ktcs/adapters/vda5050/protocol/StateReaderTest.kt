@@ -72,6 +72,18 @@ class StateReaderTest : FunSpec({
             "not JSON: "
     }
 
+    test("a changed value its bytes cannot vouch for is the validator's: escapes decoded, problems named") {
+        val reader = StateReader(validate = true)
+        reader.read(json(state(1, route))).shouldBeInstanceOf<StateRead.Valid>()
+        val escaped = String(json(state(2, route))).replace("\"o-1\"", "\"o-\\u0032\"")
+        reader.read(escaped.toByteArray()).shouldBeInstanceOf<StateRead.Valid>().state.orderId shouldBe "o-2"
+        val outOfRange = String(json(state(3, route))).replace("\"batteryCharge\":80.0", "\"batteryCharge\":\"full\"")
+        reader.read(outOfRange.toByteArray()).shouldBeInstanceOf<StateRead.Invalid>().problems.single() shouldStartWith
+            "/batteryState/batteryCharge: "
+        val fresh = route + NodeState("Pünkt-7", 6, false)
+        reader.read(json(state(4, fresh))).shouldBeInstanceOf<StateRead.Valid>().state shouldBe state(4, fresh)
+    }
+
     test("a field spelt as before is taken as read then; other fields, or the same named twice, are read whole") {
         val reader = StateReader(validate = true)
         reader.read(json(state(1, route))).shouldBeInstanceOf<StateRead.Valid>()
