@@ -50,6 +50,9 @@ internal class VehicleTopics(
 
     @Volatile private var lastVisualizationMillis = Long.MIN_VALUE
 
+    private val quickVisualization =
+        if (properties.validateIncomingMessages) MessageValidator.quickSchema(IncomingTopic.VISUALIZATION) else null
+
     /** How many incoming messages were read (validated and parsed): dropped visualization messages are not. */
     val decoded = AtomicLong()
 
@@ -135,6 +138,9 @@ internal class VehicleTopics(
                     is StateRead.Invalid -> invalid(kind, read.problems)
                     is StateRead.Valid -> read.state
                 }
+            } else if (kind == IncomingTopic.VISUALIZATION && quickVisualization?.accepts(bytes) == true) {
+                // A plain pose, checked by its bytes: no tree to build, check and decode (several a second per vehicle).
+                Vda5050Json.decodeFromString(Visualization.serializer(), String(bytes, Charsets.UTF_8))
             } else if (properties.validateIncomingMessages) {
                 when (val checked = MessageValidator.check(kind, bytes)) {
                     is Checked.Invalid -> invalid(kind, checked.problems)

@@ -64,4 +64,28 @@ class VehicleTopicsTest : FunSpec({
         received.first().shouldBeInstanceOf<Visualization>().agvPosition!!.x shouldBe 0.0
         received.last().shouldBeInstanceOf<Visualization>().agvPosition!!.x shouldBe 5.0
     }
+
+    test("a visualization message is decoded when valid and dropped when not, plain or with escapes") {
+        val link = RecordingLink()
+        var now = 1_000L
+        val properties = Vda5050Properties.read("Vehicle-01", vdaProperties("SIM-1"))
+        val topics = VehicleTopics("Vehicle-01", properties, { link }, millis = { now })
+        val received = mutableListOf<Visualization>()
+        topics.listen { received += it as Visualization }
+        val visualization = link.handlers.getValue("uagv/v2/kTCS/SIM-1/visualization")
+        fun send(position: String) {
+            now += 1_000
+            val json = """{"headerId":1,"timestamp":"2026-11-24T08:00:00Z","version":"2.0.0","manufacturer":"kTCS",""" +
+                """"serialNumber":"SIM-1","agvPosition":$position}"""
+            visualization(ByteBuffer.wrap(json.toByteArray()))
+        }
+
+        send("""{"x":1.5,"y":2,"theta":0.5,"mapId":"map","positionInitialized":true}""")
+        send("""{"x":2.5,"y":2,"theta":0.5,"mapId":"m\u0061p","positionInitialized":true}""")
+        send("""{"x":3.5,"y":2,"theta":0.5,"mapId":"map","positionInitialized":true,"localizationScore":1.5}""")
+        send("""{"x":4.5,"y":2,"theta":0.5,"mapId":"map","positionInitialized":"yes"}""")
+        send("""{"x":5.5,"y":2,"theta":0.5,"positionInitialized":true}""") // no mapId
+
+        received.map { it.agvPosition!!.x to it.agvPosition!!.mapId } shouldBe listOf(1.5 to "map", 2.5 to "map")
+    }
 })
